@@ -1,0 +1,345 @@
+"""The contracts every backend implements: axes, digital I/O and the width gauge.
+
+Why one contract per device role: the machine layer (state machine, executor) must run
+unchanged on the simulation, on Modbus and on CANopen. It therefore talks only to these
+abstract classes, and every backend (``app.drivers.sim``, ``app.drivers.modbus``,
+``app.drivers.canopen``, ``app.drivers.serial_gauge``) implements them.
+
+Why a lifecycle (configure -> activate -> deactivate -> shutdown, after ros2_control's
+hardware_interface): opening a port, mapping PDOs or connecting to a server can fail, and
+those failures must surface at a known moment, never half-way through a cut. Motion commands
+are refused unless the backend is ACTIVE, and on activation the command position is set to
+the measured one so that nothing jumps.
+
+Why cyclic ``read``/``write`` methods and no callbacks: the machine loop owns time. Once per
+period it reads every device, decides, then writes every device. A backend that simulates
+physics also implements :class:`TimeDriven`, and the loop advances it by exactly one period,
+so the simulation behaves the same in real time and on a simulated clock.
+
+Errors are surfaced, never swallowed: a failed exchange raises :class:`DriverError` (or its
+subclass :class:`CommunicationError`) from the call that hit it, and asynchronous events
+(EMCY messages, a lost heartbeat, a dead receive thread) are queued and returned by
+``events()``.
+"""
+
+from __future__ import annotations
+
+import enum
+from abc import ABC, abstractmethod
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+AXIS_NAMES: tuple[str, ...] = ("X", "Y", "Z")
+
+
+class DriverError(Exception):
+    """A device reported a failure; ``device`` names it, ``code`` is its error code if any."""
+
+    def __init__(self, device: str, message: str, code: int | None = None) -> None:
+        super().__init__(f"{device}: {message}")
+        self.device = device
+        self.code = code
+
+
+class CommunicationError(DriverError):
+    """The device did not answer, answered garbage, or the link is gone."""
+
+
+class LifecycleError(DriverError):
+    """A call was made in a lifecycle state that does not allow it (for example a motion
+    command while the backend is not ACTIVE)."""
+
+
+class LifecycleState(enum.Enum):
+    """ros2_control's primary states; ERROR is entered when configure/activate fail."""
+
+    UNCONFIGURED = "unconfigured"
+    INACTIVE = "inactive"
+    ACTIVE = "active"
+    FINALIZED = "finalized"
+    ERROR = "error"
+
+
+class Cia402State(enum.Enum):
+    """CiA 402 power state machine, decoded from the statusword (same on every backend)."""
+
+    NOT_READY_TO_SWITCH_ON = "not ready to switch on"
+    SWITCH_ON_DISABLED = "switch on disabled"
+    READY_TO_SWITCH_ON = "ready to switch on"
+    SWITCHED_ON = "switched on"
+    OPERATION_ENABLED = "operation enabled"
+    QUICK_STOP_ACTIVE = "quick stop active"
+    FAULT_REACTION_ACTIVE = "fault reaction active"
+    FAULT = "fault"
+
+
+# (mask, value, state) from CiA 402 / IEC 61800-7-201, checked in order.
+_STATUSWORD_TABLE: tuple[tuple[int, int, Cia402State], ...] = (
+    (0x4F, 0x00, Cia402State.NOT_READY_TO_SWITCH_ON),
+    (0x4F, 0x40, Cia402State.SWITCH_ON_DISABLED),
+    (0x6F, 0x21, Cia402State.READY_TO_SWITCH_ON),
+    (0x6F, 0x23, Cia402State.SWITCHED_ON),
+    (0x6F, 0x27, Cia402State.OPERATION_ENABLED),
+    (0x6F, 0x07, Cia402State.QUICK_STOP_ACTIVE),
+    (0x4F, 0x0F, Cia402State.FAULT_REACTION_ACTIVE),
+    (0x4F, 0x08, Cia402State.FAULT),
+)
+
+# Statusword bits used beyond the power state.
+SW_WARNING = 1 << 7
+SW_REMOTE = 1 << 9
+SW_TARGET_REACHED = 1 << 10
+SW_INTERNAL_LIMIT = 1 << 11
+SW_HOMING_ATTAINED = 1 << 12  # in homing mode: homing attained
+SW_FOLLOWING_ERROR = 1 << 13  # in position modes: following error
+
+# Controlwords (CiA 402 device control commands).
+CW_SHUTDOWN = 0x06
+CW_SWITCH_ON = 0x07
+CW_ENABLE_OPERATION = 0x0F
+CW_DISABLE_VOLTAGE = 0x00
+CW_QUICK_STOP = 0x02
+CW_FAULT_RESET = 0x80
+
+
+def decode_statusword(statusword: int) -> Cia402State:
+    """Return the power state a statusword encodes; unknown patterns are reported as
+    NOT_READY_TO_SWITCH_ON, the only state in which a drive accepts no command."""
+    for mask, value, state in _STATUSWORD_TABLE:
+        if statusword & mask == value:
+            return state
+    return Cia402State.NOT_READY_TO_SWITCH_ON
+
+
+@dataclass(frozen=True)
+class AxisFeedback:
+    """What one axis reports in one period, in axis units (mm for X/Y, degrees for Z)."""
+
+    name: str
+    statusword: int
+    position: float
+    velocity: float
+    following_error: float
+    fault_code: int = 0  # CiA 301 emergency error code of the active fault, 0 when none
+    homed: bool = False
+    homing_active: bool = False
+    home_switch: bool = False
+    limit_positive: bool = False
+    limit_negative: bool = False
+
+    @property
+    def power_state(self) -> Cia402State:
+        return decode_statusword(self.statusword)
+
+    @property
+    def enabled(self) -> bool:
+        return self.power_state is Cia402State.OPERATION_ENABLED
+
+    @property
+    def faulted(self) -> bool:
+        return self.power_state in (Cia402State.FAULT, Cia402State.FAULT_REACTION_ACTIVE)
+
+
+@dataclass(frozen=True)
+class InputImage:
+    """The machine's digital inputs, by function (the backend maps them to terminals).
+
+    ``estop_ok`` and ``guard_closed`` are True when the safety chain is healthy: a broken
+    wire reads as a stop, as the hard-wired chain itself does."""
+
+    part_present: bool = False
+    centering_extended: bool = False
+    centering_retracted: bool = True
+    clamps_closed: bool = False
+    clamps_open: bool = True
+    spindle_running: bool = False
+    guard_closed: bool = True
+    estop_ok: bool = True
+    start_button: bool = False
+    stop_button: bool = False
+    reset_button: bool = False
+
+
+@dataclass(frozen=True)
+class OutputImage:
+    """The machine's digital outputs, by function."""
+
+    centering_extend: bool = False
+    clamps_close: bool = False
+    spindle_on: bool = False
+    lamp_green: bool = False
+    lamp_yellow: bool = False
+    lamp_red: bool = False
+
+
+class DeviceEventKind(enum.Enum):
+    EMERGENCY = "emergency"  # EMCY message or fault code reported by a drive
+    COMMUNICATION_LOST = "communication lost"
+    COMMUNICATION_RESTORED = "communication restored"
+    RECEIVE_THREAD_DIED = "receive thread died"
+
+
+@dataclass(frozen=True)
+class DeviceEvent:
+    """Something a device said (or stopped saying) between two periods."""
+
+    kind: DeviceEventKind
+    device: str
+    code: int = 0
+    text: str = ""
+
+
+class Lifecycle(ABC):
+    """configure -> activate -> deactivate -> shutdown; every transition may raise DriverError."""
+
+    @property
+    @abstractmethod
+    def lifecycle_state(self) -> LifecycleState: ...
+
+    @abstractmethod
+    def configure(self) -> None:
+        """Open links and check the devices answer; no power is applied."""
+
+    @abstractmethod
+    def activate(self) -> None:
+        """Start cyclic exchange; command positions are set to the measured ones."""
+
+    @abstractmethod
+    def deactivate(self) -> None:
+        """Stop cyclic exchange; drives are disabled, outputs switched off."""
+
+    @abstractmethod
+    def shutdown(self) -> None:
+        """Release every resource; safe to call in any state, more than once."""
+
+    def events(self) -> list[DeviceEvent]:
+        """Asynchronous events since the last call (EMCY, link lost, ...)."""
+        return []
+
+
+class MotionBackend(Lifecycle):
+    """Servo axes driven in cyclic synchronous position mode.
+
+    Power-state requests (``enable``, ``disable``, ``quick_stop``, ``fault_reset``,
+    ``start_homing``) are non-blocking: they set the controlword, and the drive's answer
+    appears in the following ``read_axes`` results. The machine layer decides when to call
+    them; a backend never re-enables or resets a drive on its own.
+    """
+
+    @property
+    @abstractmethod
+    def axis_names(self) -> tuple[str, ...]: ...
+
+    @abstractmethod
+    def read_axes(self) -> Mapping[str, AxisFeedback]:
+        """Feedback of every axis for this period."""
+
+    @abstractmethod
+    def write_setpoints(self, positions: Mapping[str, float]) -> None:
+        """Target positions for this period, applied on all axes at the same instant
+        (one SYNC, one Modbus transaction set, one simulation step): no skew between axes."""
+
+    @abstractmethod
+    def enable(self, axis: str) -> None:
+        """Walk the CiA 402 machine to OPERATION ENABLED (shutdown, switch on, enable)."""
+
+    @abstractmethod
+    def disable(self, axis: str) -> None:
+        """Disable voltage: the drive ends in SWITCH ON DISABLED."""
+
+    @abstractmethod
+    def quick_stop(self, axis: str) -> None:
+        """Quick stop: the drive decelerates on its own ramp and holds."""
+
+    @abstractmethod
+    def fault_reset(self, axis: str) -> None:
+        """Controlword 0x00 then 0x80 (rising edge of bit 7). Only ever called on an
+        operator's action; the drive ends in SWITCH ON DISABLED, not enabled."""
+
+    @abstractmethod
+    def start_homing(self, axis: str) -> None:
+        """Start the drive's homing method; ``AxisFeedback.homing_active``/``homed`` follow."""
+
+
+class DigitalIO(Lifecycle):
+    """The machine's discrete inputs and outputs."""
+
+    @abstractmethod
+    def read_inputs(self) -> InputImage: ...
+
+    @abstractmethod
+    def write_outputs(self, outputs: OutputImage) -> None: ...
+
+
+@dataclass(frozen=True)
+class GaugeReading:
+    """One answer of the width gauge: a width, or the reason there is none."""
+
+    width_mm: float | None
+    raw: str = ""
+    error: str = ""
+
+    @property
+    def ok(self) -> bool:
+        return self.width_mm is not None and not self.error
+
+
+class WidthGauge(Lifecycle):
+    """The board width gauge. ``request`` asks for a fresh reading (no-op for streaming
+    gauges); ``poll`` never blocks and returns the first complete reading since the request,
+    or None while there is none yet. An unplugged gauge raises CommunicationError."""
+
+    @abstractmethod
+    def request(self) -> None: ...
+
+    @abstractmethod
+    def poll(self) -> GaugeReading | None: ...
+
+
+@runtime_checkable
+class TimeDriven(Protocol):
+    """Implemented by simulated devices: the machine loop advances them by one period."""
+
+    def advance(self, dt_s: float) -> None: ...
+
+
+@runtime_checkable
+class FaultInjector(Protocol):
+    """Implemented by the simulation: faults a test, ``stave simulate`` or a technician
+    injects. ``kind`` is one of FAULT_KINDS; ``target`` an axis name where it applies."""
+
+    def inject(self, kind: str, target: str = "") -> None: ...
+
+    def clear_injections(self) -> None: ...
+
+
+FAULT_KINDS: tuple[str, ...] = (
+    "drive_fault",
+    "following_error",
+    "limit_switch",
+    "estop",
+    "comms_loss",
+    "gauge_none",
+    "gauge_garbage",
+    "gauge_out_of_range",
+    "clamp_sensor",
+    "centering_sensor",
+    "spindle",
+)
+
+
+@dataclass
+class MachineBackend:
+    """What one backend provides: the axes and the I/O (one fieldbus usually carries both).
+
+    ``extras`` holds backend-specific objects the tools may use (for example the simulated
+    world, for fault injection), looked up by name, never required by the machine layer."""
+
+    name: str
+    motion: MotionBackend
+    io: DigitalIO
+    extras: dict[str, object] = field(default_factory=dict)
+
+    def devices(self) -> list[Lifecycle]:
+        return [self.motion, self.io]
