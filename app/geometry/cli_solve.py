@@ -1,0 +1,340 @@
+"""`stave solve`: the profile and tool path of one board, from the command line.
+
+    stave solve --length MM --width MM --length-ratio N/D --width-ratio N/D
+                [--thickness MM] [--tilt DEG] [--tool-radius MM] [--machine-height MM]
+                [--config FILE] [--json]
+
+Human-readable by default; `--json` prints one JSON object (keys A, B, C, D, R, W1, points,
+arc_center_a, arc_center_b, toolpath). Invalid input exits with code 2 and one line on
+stderr naming the field(s) and the allowed range(s); never a traceback.
+
+The lead wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it standalone
+(`python -m app.geometry.cli_solve ...`). Numbers are read as text and converted here, so that
+a bad number is reported with the field's name and range like every other invalid input.
+
+Process parameters (tool radius, machine height, start position P0, lead, tilt clearance,
+home) come from `--config` through `load_machine_settings`, the one function to adapt to
+`app.config`; flags override them; without either the documented defaults below apply.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import json
+import math
+import sys
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+from typing import NoReturn
+
+from app.geometry.errors import GeometryError
+from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
+from app.geometry.profile import StaveProfile, solve_profile
+from app.geometry.ratio import Ratio
+from app.geometry.toolpath import ArcSegment, ToolPath, ToolPathParams, build_toolpath
+
+EXIT_OK = 0
+EXIT_INVALID_INPUT = 2
+
+# Defaults when neither a flag nor the config gives a value. They describe a typical
+# jointer: an 80 mm diameter cutter, the tilt pivot 250 mm above the table, the stave's left
+# end at X = 100 mm on a centre line at Y = 400 mm, home at the origin, untilted.
+DEFAULT_TILT_DEG = 4.0
+"""4 deg: every width from 60 to 280 mm then gives a barrel of 860..4014 mm (limits 240..4500)."""
+
+PROCESS_DEFAULTS: Mapping[str, float] = {
+    "tool_radius_mm": 40.0,
+    "machine_height_mm": 250.0,
+    "start_x_mm": 100.0,
+    "start_y_mm": 400.0,
+    "lead_mm": 60.0,
+    "tilt_clearance_mm": 50.0,
+    "home_x_mm": 0.0,
+    "home_y_mm": 0.0,
+    "home_z_deg": 0.0,
+}
+
+LIMIT_KEYS = tuple(StaveLimits.__dataclass_fields__)
+
+_CONFIG_SECTIONS = ("process", "system", "machine", "geometry", "toolpath", "limits", "axes")
+
+
+class CliInputError(Exception):
+    """Invalid command-line input that is not a geometry rule (bad number, bad config file)."""
+
+
+@dataclass(frozen=True)
+class MachineSettings:
+    """Process parameters and limits for one solve."""
+
+    process: Mapping[str, float]
+    limits: StaveLimits
+
+
+def _find(config: object, key: str) -> object | None:
+    """`key` on the config object or mapping, or in one of its usual sections."""
+    holders: list[object] = [config]
+    for section in _CONFIG_SECTIONS:
+        sub = config.get(section) if isinstance(config, Mapping) else getattr(config, section, None)
+        if sub is not None:
+            holders.append(sub)
+    for holder in holders:
+        value: object = (
+            holder.get(key) if isinstance(holder, Mapping) else getattr(holder, key, None)
+        )
+        if value is not None:
+            return value
+    return None
+
+
+def load_machine_settings(config_path: str | None) -> MachineSettings:
+    """Read the process parameters and limits; the single place that knows `app.config`.
+
+    Uses `app.config.load_config(path)` when that module exists, looking each parameter up
+    by its name (tool_radius_mm, machine_height_mm, start_x_mm, ..., x_min_mm, ...) on the
+    returned object or mapping or one of its sections (process, system, machine, ...); missing
+    ones keep their defaults. Without `app.config`, `--config` is ignored with a note.
+    """
+    process = dict(PROCESS_DEFAULTS)
+    if config_path is None:
+        return MachineSettings(process=process, limits=StaveLimits())
+    try:
+        config_module = importlib.import_module("app.config")
+    except ModuleNotFoundError as exc:
+        if exc.name != "app.config":
+            raise
+        print(
+            "stave solve: note: app.config is not available; --config ignored, "
+            "built-in defaults used",
+            file=sys.stderr,
+        )
+        return MachineSettings(process=process, limits=StaveLimits())
+    try:
+        config = config_module.load_config(config_path)
+    except Exception as exc:  # any failure to read the file is the user's input error
+        raise CliInputError(f"--config {config_path}: {exc}".replace("\n", " ")) from exc
+    return settings_from_config(config)
+
+
+def settings_from_config(config: object) -> MachineSettings:
+    """Process parameters and limits found by name in an already loaded configuration.
+
+    `config` may be a mapping or an object with attributes; each name (tool_radius_mm, ...,
+    x_min_mm, ...) is looked up on it and then in its sections (process, system, machine,
+    geometry, toolpath, limits, axes). Names not found keep their defaults.
+    """
+    process = dict(PROCESS_DEFAULTS)
+    for key in process:
+        found = _find(config, key)
+        if found is not None:
+            process[key] = _parse_float(f"{key} (config)", str(found), "a finite number")
+    limit_values: dict[str, float] = {}
+    for key in LIMIT_KEYS:
+        found = _find(config, key)
+        if found is not None:
+            limit_values[key] = _parse_float(f"{key} (config)", str(found), "a finite number")
+    return MachineSettings(process=process, limits=replace(StaveLimits(), **limit_values))
+
+
+def _parse_float(field: str, text: str, allowed: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise CliInputError(f"{field} = {text!r} is not a finite number: allowed {allowed}")
+    return value
+
+
+def _number_or_text(text: str | None) -> object:
+    """A float if the text is one; otherwise the text itself, for the validators to report."""
+    if text is None:
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def _ratio_or_text(text: str) -> tuple[Ratio | None, object]:
+    try:
+        ratio = Ratio.parse(text)
+    except ValueError:
+        return None, text
+    return ratio, ratio.value
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options of `stave solve` (values are read as text and checked by `run`)."""
+    parser.add_argument("--length", required=True, metavar="MM", help="stave length L")
+    parser.add_argument("--width", required=True, metavar="MM", help="measured board width W")
+    parser.add_argument(
+        "--length-ratio", required=True, metavar="N/D", help="lambda = L1 : L, e.g. 1/4 or 0.25"
+    )
+    parser.add_argument(
+        "--width-ratio", required=True, metavar="N/D", help="k = W1 : W, e.g. 3/4 or 0.75"
+    )
+    parser.add_argument("--thickness", metavar="MM", help="stave thickness H (checked only)")
+    parser.add_argument(
+        "--tilt", metavar="DEG", help=f"bevel alpha (default {format(DEFAULT_TILT_DEG, 'g')})"
+    )
+    parser.add_argument(
+        "--tool-radius",
+        metavar="MM",
+        help=f"cutter radius r (default {PROCESS_DEFAULTS['tool_radius_mm']:g})",
+    )
+    parser.add_argument(
+        "--machine-height",
+        metavar="MM",
+        help=f"table to tilt pivot Hm (default {PROCESS_DEFAULTS['machine_height_mm']:g})",
+    )
+    parser.add_argument("--config", metavar="FILE", help="machine configuration file")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+
+
+def _solve(args: argparse.Namespace) -> tuple[StaveProfile, ToolPath, tuple[str, str]]:
+    settings = load_machine_settings(args.config)
+    process = dict(settings.process)
+    if args.tool_radius is not None:
+        process["tool_radius_mm"] = _parse_float(
+            "tool_radius_mm", args.tool_radius, "tool radius > 0 mm"
+        )
+    if args.machine_height is not None:
+        process["machine_height_mm"] = _parse_float(
+            "machine_height_mm", args.machine_height, "machine height >= 0 mm"
+        )
+    length = _number_or_text(args.length)
+    width = _number_or_text(args.width)
+    thickness = _number_or_text(args.thickness)
+    tilt = _number_or_text(args.tilt) if args.tilt is not None else DEFAULT_TILT_DEG
+    length_ratio, lam = _ratio_or_text(args.length_ratio)
+    width_ratio, k = _ratio_or_text(args.width_ratio)
+
+    errors = validate_stave(length, width, lam, k, settings.limits, thickness, tilt)
+    if errors:
+        raise GeometryError(errors)
+    assert isinstance(length, float) and isinstance(width, float) and isinstance(tilt, float)
+    assert length_ratio is not None and width_ratio is not None
+    profile = solve_profile(length, width, length_ratio.value, width_ratio.value, settings.limits)
+    params = ToolPathParams(tilt_deg=tilt, **process)
+    toolpath = build_toolpath(profile, params)
+    travel_errors = check_toolpath_travel(toolpath, settings.limits)
+    if travel_errors:
+        raise GeometryError(travel_errors)
+    return profile, toolpath, (str(length_ratio), str(width_ratio))
+
+
+def _pair(point: tuple[float, float]) -> list[float]:
+    return [point[0], point[1]]
+
+
+def to_json_object(profile: StaveProfile, toolpath: ToolPath) -> dict[str, object]:
+    """The `--json` object."""
+    return {
+        "A": profile.A,
+        "B": profile.B,
+        "C": profile.C,
+        "D": profile.D,
+        "R": profile.R,
+        "W1": profile.W1,
+        "points": {name: _pair(point) for name, point in profile.points.items()},
+        "arc_center_a": _pair(profile.arc_center_a),
+        "arc_center_b": _pair(profile.arc_center_b),
+        "toolpath": toolpath.to_json_list(),
+    }
+
+
+def format_report(profile: StaveProfile, toolpath: ToolPath, ratios: tuple[str, str]) -> str:
+    """The human-readable output."""
+    p = toolpath.params
+    lines = [
+        f"stave: L = {profile.length_mm:g} mm, W = {profile.width_mm:g} mm, "
+        f"length ratio {ratios[0]}, width ratio {ratios[1]}",
+        f"  A  = {profile.A:12.6f} mm  straight section",
+        f"  B  = {profile.B:12.6f} mm  half length of the arc",
+        f"  C  = {profile.C:12.6f} mm  narrowing per side at the heads",
+        f"  D  = {profile.D:12.6f} mm  rise of the straight section",
+        f"  R  = {profile.R:12.6f} mm  arc radius",
+        f"  W1 = {profile.W1:12.6f} mm  head width",
+        "points (profile frame, mm):",
+    ]
+    names = list(profile.points)
+    for left, right in zip(names[:4], names[4:], strict=True):
+        (lx, ly), (rx, ry) = profile.points[left], profile.points[right]
+        lines.append(f"  {left} ({lx:12.6f}, {ly:12.6f})    {right} ({rx:12.6f}, {ry:12.6f})")
+    (ax, ay), (bx, by) = profile.arc_center_a, profile.arc_center_b
+    lines.append(f"  arc centre A ({ax:.6f}, {ay:.6f})    arc centre B ({bx:.6f}, {by:.6f})")
+    lines.append(
+        f"tool path (machine X, Y mm; tilt deg): r = {p.tool_radius_mm:g} mm, "
+        f"Hm = {p.machine_height_mm:g} mm, tilt = {p.tilt_deg:g} deg, "
+        f"P0 = ({p.start_x_mm:g}, {p.start_y_mm:g})"
+    )
+    lines.append("   #  move  side      start X    start Y        end X      end Y    tilt")
+    for number, segment in enumerate(toolpath.segments, start=1):
+        if isinstance(segment, ArcSegment):
+            kind = "arc " + ("cw " if segment.clockwise else "ccw")
+        else:
+            kind = "line   "
+        tilt_text = (
+            f"{segment.z_end_deg:g}"
+            if segment.z_start_deg == segment.z_end_deg
+            else f"{segment.z_start_deg:g} -> {segment.z_end_deg:g}"
+        )
+        side = segment.side if segment.cutting else "-"
+        lines.append(
+            f"  {number:2d}  {kind} {side:>2}  {segment.start[0]:11.3f} {segment.start[1]:10.3f}"
+            f"  {segment.end[0]:11.3f} {segment.end[1]:10.3f}    {tilt_text}"
+            + ("" if segment.cutting else "  (travel)")
+        )
+    lines.append(
+        f"cutting length: side A {toolpath.cutting_length_mm('A'):.3f} mm, "
+        f"side B {toolpath.cutting_length_mm('B'):.3f} mm (leads included)"
+    )
+    return "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run `stave solve` with parsed arguments; returns the exit code."""
+    try:
+        profile, toolpath, ratios = _solve(args)
+    except GeometryError as exc:
+        print("stave solve: " + "; ".join(e.message for e in exc.errors), file=sys.stderr)
+        return EXIT_INVALID_INPUT
+    except CliInputError as exc:
+        print(f"stave solve: {exc}", file=sys.stderr)
+        return EXIT_INVALID_INPUT
+    if args.json:
+        print(json.dumps(to_json_object(profile, toolpath)))
+    else:
+        print(format_report(profile, toolpath, ratios))
+    return EXIT_OK
+
+
+class _OneLineParser(argparse.ArgumentParser):
+    """argparse, but a usage error is one line on stderr (exit 2), like every other error."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(EXIT_INVALID_INPUT, f"{self.prog}: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _OneLineParser(
+        prog="stave solve", description="Solve the stave profile and its tool path."
+    )
+    add_arguments(parser)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Standalone entry point; returns the exit code instead of exiting."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else EXIT_INVALID_INPUT
+    return run(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

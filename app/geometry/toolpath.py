@@ -1,0 +1,461 @@
+"""The tool path of one stave in machine coordinates, both sides, as exact lines and arcs.
+
+Sign conventions (the spec leaves some of them open; these are the ones the code uses):
+
+* Profile frame (spec section 2): x along the stave from its left end, y across it, 0 on the
+  centre line, +y towards side A, which is cut first.
+* Machine frame: X = P0x + x, Y = P0y + y, the same orientation as the profile frame
+  (P0 = the system parameter "start position"). The path's points are the positions the X
+  and Y axes take, i.e. of the tilt pivot of the router holder.
+* Z (tilt, deg): a positive tilt moves the cutter's lower end towards +Y: the tool axis meets
+  the table at Y_pivot + Hm * tan(Z). Side A is cut at Z = +alpha, side B at Z = -alpha, so
+  on both sides the cutter leans over the board and the top face comes out narrower.
+* Compensation: the edge is offset *outward* (away from the board: +y on side A, -y on
+  side B) along its normal by rc = r / cos(alpha), the radius in plan view of the tilted
+  cutter at the table; lines stay lines, the arc keeps its centre with radius R + rc. Then the
+  pivot shift: Y_pivot = Y_offset - Hm * tan(Z), i.e. -Hm*tan(alpha) on side A and
+  +Hm*tan(alpha) on side B. Where the normal is along y this is the spec's
+  y_cut = y_pivot + Hm*tan(alpha) - r/cos(alpha) on side A, mirrored on side B.
+* Direction: both sides are cut clockwise around the board seen from above (+X to the right,
+  +Y up): side A from the left end to the right end, side B back from right to left. The
+  arcs are therefore "cw" on both sides.
+
+Motion of one stave: home -> approach the side A lead-in start while tilting to +alpha (routed
+around the board if the straight line would cross it) -> lead-in -> P1..P4 -> lead-out ->
+travel out to the tilt position (tilt_clearance_mm beyond the board's right end plus the tool
+radius) -> tilt +alpha -> -alpha while crossing to side B -> in to the side B lead-in start ->
+lead-in -> P5..P8 -> lead-out -> home, tilting back to home_z.
+
+Lead-in and lead-out run along the extension of the straight section (or of the arc's tangent
+when lambda = 0) over `lead_mm`, which must exceed rc: then the cutter starts and ends clear
+of the board (its extent along X is r at any tilt, rc in the plan-view model) and the corners
+are cut completely. Non-cutting moves keep the pivot outside a keep-out box around the board
+(see `keep_out_box`), so the tool never touches the board while travelling or tilting.
+
+`build_original_toolpath` gives the original program's method (the whole profile shifted in
+y only) for comparison: on the slanted sections it cuts too deep by rc*(1/cos(theta) - 1)
+across the stave and moves the tangent points along X by rc*sin(theta).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import Enum
+from itertools import pairwise
+
+from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number
+from app.geometry.errors import out_of_range as _out_of_range
+from app.geometry.polyline import PolylinePoint
+from app.geometry.polyline import to_polyline as _to_polyline
+from app.geometry.profile import StaveProfile
+from app.geometry.segments import ArcSegment, LineSegment, Point, Segment
+
+__all__ = [
+    "ArcSegment",
+    "CompensationMethod",
+    "KeepOutBox",
+    "LineSegment",
+    "Segment",
+    "SideCut",
+    "ToolPath",
+    "ToolPathParams",
+    "build_original_toolpath",
+    "build_toolpath",
+    "compensated_side",
+    "keep_out_box",
+    "validate_toolpath_params",
+]
+
+SIDE_SIGN = {"A": 1.0, "B": -1.0}
+"""+1 for side A (outward is +y, tilt +alpha), -1 for side B."""
+
+
+class CompensationMethod(Enum):
+    """How the cutter radius is compensated."""
+
+    NORMAL = "normal"
+    """Offset along the edge's normal by r/cos(alpha) (this project)."""
+    Y_SHIFT = "y_shift"
+    """The original program: the whole edge shifted in y by r/cos(alpha)."""
+
+
+@dataclass(frozen=True)
+class ToolPathParams:
+    """System parameters the tool path needs (mm, deg; machine coordinates).
+
+    tilt_deg is the recipe's bevel alpha (>= 0); start_x/y_mm is P0, the machine position of
+    the profile origin; lead_mm the lead-in/lead-out length along the path (> r/cos(alpha));
+    tilt_clearance_mm how far beyond (board's right end + tool radius) the tilt change
+    happens, also the margin of the detours that take travel moves around the board.
+    """
+
+    tool_radius_mm: float
+    machine_height_mm: float
+    tilt_deg: float
+    start_x_mm: float
+    start_y_mm: float
+    lead_mm: float
+    home_x_mm: float
+    home_y_mm: float
+    home_z_deg: float
+    tilt_clearance_mm: float
+
+    @property
+    def effective_radius_mm(self) -> float:
+        """r / cos(alpha): the cutter's radius in plan view at the table."""
+        return self.tool_radius_mm / math.cos(math.radians(self.tilt_deg))
+
+    @property
+    def pivot_shift_mm(self) -> float:
+        """Hm * tan(alpha): how far the cutter meets the table from below the pivot."""
+        return self.machine_height_mm * math.tan(math.radians(self.tilt_deg))
+
+
+def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
+    """Every violation in the parameters (geometric sanity; machine limits are elsewhere)."""
+    errors: list[FieldError] = []
+    values: dict[str, float] = {}
+    for name in ToolPathParams.__dataclass_fields__:
+        value = getattr(params, name)
+        is_number = isinstance(value, int | float) and not isinstance(value, bool)
+        if not (is_number and math.isfinite(value)):
+            errors.append(not_a_number(name, value, "a finite number"))
+        else:
+            values[name] = float(value)
+
+    def check(name: str, ok: bool, allowed: str, note: str = "") -> bool:
+        if name in values and not ok:
+            errors.append(_out_of_range(name, values[name], allowed, note))
+            return False
+        return name in values
+
+    radius_ok = check(
+        "tool_radius_mm", values.get("tool_radius_mm", 0.0) > 0.0, "tool radius > 0 mm"
+    )
+    check(
+        "machine_height_mm",
+        values.get("machine_height_mm", 0.0) >= 0.0,
+        "machine height >= 0 mm",
+    )
+    tilt_ok = check("tilt_deg", 0.0 <= values.get("tilt_deg", 0.0) < 90.0, "0 <= tilt < 90 deg")
+    check("home_z_deg", -90.0 < values.get("home_z_deg", 0.0) < 90.0, "-90 < home tilt < 90 deg")
+    check(
+        "tilt_clearance_mm",
+        values.get("tilt_clearance_mm", 0.0) >= 0.0,
+        "tilt clearance >= 0 mm",
+    )
+    if radius_ok and tilt_ok:
+        minimum = params.effective_radius_mm
+        check(
+            "lead_mm",
+            values.get("lead_mm", 0.0) > minimum,
+            f"lead > {minimum:.3f} mm",
+            "longer than the cutter's radius at the table, tool_radius_mm / cos(tilt_deg)",
+        )
+    return errors
+
+
+@dataclass(frozen=True)
+class SideCut:
+    """The compensated edge of one side in the profile frame, before the pivot shift.
+
+    Cut order: lead_in_start -> points[0] (line) -> points[1] (line) -> points[2] (arc about
+    arc_center, clockwise) -> points[3] (line) -> lead_out_end (line). points[0] == points[1]
+    and points[2] == points[3] when lambda = 0 (no straight sections).
+    """
+
+    side: str
+    lead_in_start: Point
+    points: tuple[Point, Point, Point, Point]
+    arc_center: Point
+    lead_out_end: Point
+
+
+def _side_geometry(
+    profile: StaveProfile, side: str
+) -> tuple[tuple[Point, Point, Point, Point], Point, Point, Point]:
+    """Edge points in cut order, arc centre, and the unit directions of both straight parts."""
+    theta = profile.slope_rad
+    cos_t, sin_t = math.cos(theta), math.sin(theta)
+    p = profile.points
+    if side == "A":
+        return (
+            (p["P1"], p["P2"], p["P3"], p["P4"]),
+            profile.arc_center_a,
+            (cos_t, sin_t),
+            (cos_t, -sin_t),
+        )
+    if side == "B":
+        return (
+            (p["P5"], p["P6"], p["P7"], p["P8"]),
+            profile.arc_center_b,
+            (-cos_t, -sin_t),
+            (-cos_t, sin_t),
+        )
+    raise ValueError(f"side must be 'A' or 'B', got {side!r}")
+
+
+def _moved(point: Point, dx: float, dy: float) -> Point:
+    return (point[0] + dx, point[1] + dy)
+
+
+def compensated_side(
+    profile: StaveProfile,
+    side: str,
+    offset_mm: float,
+    lead_mm: float,
+    method: CompensationMethod = CompensationMethod.NORMAL,
+) -> SideCut:
+    """The tool centre's path in plan view for one side, profile frame, no pivot shift."""
+    edge, centre, first_dir, last_dir = _side_geometry(profile, side)
+    if method is CompensationMethod.NORMAL:
+        # The outward normal is the left-hand normal of the (clockwise) direction of travel.
+        first_normal = (-first_dir[1] * offset_mm, first_dir[0] * offset_mm)
+        last_normal = (-last_dir[1] * offset_mm, last_dir[0] * offset_mm)
+        q1 = _moved(edge[0], *first_normal)
+        q2 = _moved(edge[1], *first_normal)
+        q3 = _moved(edge[2], *last_normal)
+        q4 = _moved(edge[3], *last_normal)
+        arc_center = centre
+    else:
+        dy = SIDE_SIGN[side] * offset_mm
+        q1, q2, q3, q4 = (_moved(point, 0.0, dy) for point in edge)
+        arc_center = _moved(centre, 0.0, dy)
+    return SideCut(
+        side=side,
+        lead_in_start=_moved(q1, -first_dir[0] * lead_mm, -first_dir[1] * lead_mm),
+        points=(q1, q2, q3, q4),
+        arc_center=arc_center,
+        lead_out_end=_moved(q4, last_dir[0] * lead_mm, last_dir[1] * lead_mm),
+    )
+
+
+def _cut_segments(cut: SideCut, dx: float, dy: float, tilt_deg: float) -> list[Segment]:
+    """The side's cutting moves, translated by (dx, dy) into machine coordinates."""
+    start = _moved(cut.lead_in_start, dx, dy)
+    q1, q2, q3, q4 = (_moved(point, dx, dy) for point in cut.points)
+    end = _moved(cut.lead_out_end, dx, dy)
+    centre = _moved(cut.arc_center, dx, dy)
+    segments: list[Segment] = [LineSegment(start, q1, tilt_deg, tilt_deg, True, cut.side)]
+    if q2 != q1:
+        segments.append(LineSegment(q1, q2, tilt_deg, tilt_deg, True, cut.side))
+    segments.append(ArcSegment(q2, q3, centre, True, tilt_deg, tilt_deg, True, cut.side))
+    if q4 != q3:
+        segments.append(LineSegment(q3, q4, tilt_deg, tilt_deg, True, cut.side))
+    segments.append(LineSegment(q4, end, tilt_deg, tilt_deg, True, cut.side))
+    return segments
+
+
+@dataclass(frozen=True)
+class KeepOutBox:
+    """Open rectangle (profile frame) the tilt pivot must stay out of when not cutting.
+
+    With the pivot outside it the tool cannot touch the board: along X the cutter reaches r
+    from the pivot at any tilt; across, at most r/cos(z) + Hm*tan|z| at the table.
+    """
+
+    x_min: float
+    x_max: float
+    y_min: float
+    y_max: float
+
+    def contains(self, point: Point) -> bool:
+        return self.x_min < point[0] < self.x_max and self.y_min < point[1] < self.y_max
+
+    def blocks(self, start: Point, end: Point) -> bool:
+        """True if the straight move start -> end passes through the box's interior."""
+        low, high = 0.0, 1.0
+        for origin, delta, box_low, box_high in (
+            (start[0], end[0] - start[0], self.x_min, self.x_max),
+            (start[1], end[1] - start[1], self.y_min, self.y_max),
+        ):
+            if delta == 0.0:
+                if not box_low < origin < box_high:
+                    return False
+                continue
+            enter, leave = (box_low - origin) / delta, (box_high - origin) / delta
+            low, high = max(low, min(enter, leave)), min(high, max(enter, leave))
+            if low >= high:
+                return False
+        return True
+
+
+def keep_out_box(profile: StaveProfile, params: ToolPathParams) -> KeepOutBox:
+    """The box around the raw board (L x W) that travel moves keep the pivot out of."""
+    tilt_rad = math.radians(max(abs(params.home_z_deg), abs(params.tilt_deg)))
+    across = params.tool_radius_mm / math.cos(tilt_rad) + params.machine_height_mm * math.tan(
+        tilt_rad
+    )
+    half_width = profile.width_mm / 2.0
+    return KeepOutBox(
+        x_min=-params.tool_radius_mm,
+        x_max=profile.length_mm + params.tool_radius_mm,
+        y_min=-half_width - across,
+        y_max=half_width + across,
+    )
+
+
+def _route(left: Point, other: Point, box: KeepOutBox, margin_mm: float) -> list[Point]:
+    """Waypoints from `left` (a point left of the box) to `other` that avoid the box."""
+    if not box.blocks(left, other):
+        return [left, other]
+    if other[1] >= box.y_max or other[1] <= box.y_min:
+        return [left, (left[0], other[1]), other]
+    # `other` is level with the board and beyond its right end: go round on `left`'s side.
+    side_y = box.y_max + margin_mm if left[1] >= 0.0 else box.y_min - margin_mm
+    return [left, (left[0], side_y), (other[0], side_y), other]
+
+
+def _travel(points: list[Point], z_from_deg: float, z_to_deg: float) -> list[Segment]:
+    """Non-cutting moves through `points`, the tilt changing linearly with distance."""
+    unique = [points[0]]
+    for point in points[1:]:
+        if point != unique[-1]:
+            unique.append(point)
+    if len(unique) == 1:
+        if z_from_deg == z_to_deg:
+            return []
+        return [LineSegment(unique[0], unique[0], z_from_deg, z_to_deg, False, "")]
+    lengths = [math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in pairwise(unique)]
+    total = sum(lengths)
+    segments: list[Segment] = []
+    done = 0.0
+    last = len(lengths) - 1
+    for index, ((a, b), length) in enumerate(zip(pairwise(unique), lengths, strict=True)):
+        if z_from_deg == z_to_deg:
+            z_start = z_end = z_from_deg
+        else:
+            z_start = z_from_deg + (z_to_deg - z_from_deg) * done / total
+            done += length
+            z_end = (
+                z_to_deg if index == last else z_from_deg + (z_to_deg - z_from_deg) * (done / total)
+            )
+        segments.append(LineSegment(a, b, z_start, z_end, False, ""))
+    return segments
+
+
+@dataclass(frozen=True)
+class ToolPath:
+    """The complete motion of one stave, machine coordinates, in execution order."""
+
+    segments: tuple[Segment, ...]
+    params: ToolPathParams
+    profile: StaveProfile
+
+    @property
+    def length_mm(self) -> float:
+        return sum(segment.length_mm for segment in self.segments)
+
+    def side_segments(self, side: str) -> tuple[Segment, ...]:
+        """The cutting segments of side "A" or "B" (lead-in and lead-out included)."""
+        if side not in SIDE_SIGN:
+            raise ValueError(f"side must be 'A' or 'B', got {side!r}")
+        return tuple(s for s in self.segments if s.cutting and s.side == side)
+
+    def cutting_length_mm(self, side: str | None = None) -> float:
+        """Length cut at feed on one side ("A"/"B", leads included), or on both (None)."""
+        sides = tuple(SIDE_SIGN) if side is None else (side,)
+        return sum(s.length_mm for name in sides for s in self.side_segments(name))
+
+    def to_json_list(self) -> list[dict[str, object]]:
+        """The `stave solve --json` segment format (z_deg is the tilt at the segment's end)."""
+        items: list[dict[str, object]] = []
+        for segment in self.segments:
+            item: dict[str, object] = {
+                "type": "arc" if isinstance(segment, ArcSegment) else "line",
+                "start": [segment.start[0], segment.start[1]],
+                "end": [segment.end[0], segment.end[1]],
+            }
+            if isinstance(segment, ArcSegment):
+                item["center"] = [segment.center[0], segment.center[1]]
+                item["direction"] = "cw" if segment.clockwise else "ccw"
+            item["z_deg"] = segment.z_end_deg
+            if segment.z_start_deg != segment.z_end_deg:
+                item["z_start_deg"] = segment.z_start_deg
+            item["cutting"] = segment.cutting
+            items.append(item)
+        return items
+
+    def to_polyline(
+        self, max_chord_error_mm: float = 0.001, max_segment_mm: float | None = None
+    ) -> list[PolylinePoint]:
+        """Points (x_mm, y_mm, z_deg, cutting) whose chords stay within the bound of the path.
+
+        `cutting` belongs to the move ending at the point; the first point is the start.
+        """
+        return _to_polyline(self.segments, max_chord_error_mm, max_segment_mm)
+
+
+def _home_error(params: ToolPathParams, box: KeepOutBox) -> FieldError:
+    x0, y0 = params.start_x_mm, params.start_y_mm
+    allowed = (
+        f"X <= {format_value(round(x0 + box.x_min, 3))} or "
+        f"X >= {format_value(round(x0 + box.x_max, 3))} or "
+        f"Y <= {format_value(round(y0 + box.y_min, 3))} or "
+        f"Y >= {format_value(round(y0 + box.y_max, 3))} mm"
+    )
+    value = (params.home_x_mm, params.home_y_mm)
+    message = (
+        f"home_position_mm = ({format_value(value[0])}, {format_value(value[1])}) puts the "
+        f"tool over the board: allowed {allowed}"
+    )
+    return FieldError("home_position_mm", value, allowed, message)
+
+
+def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMethod) -> ToolPath:
+    errors = validate_toolpath_params(params)
+    if errors:
+        raise GeometryError(errors)
+    box = keep_out_box(profile, params)
+    x0, y0 = float(params.start_x_mm), float(params.start_y_mm)
+    home = (float(params.home_x_mm) - x0, float(params.home_y_mm) - y0)
+    if box.contains(home):
+        raise GeometryError([_home_error(params, box)])
+
+    offset = params.effective_radius_mm
+    shift = params.pivot_shift_mm
+    alpha = params.tilt_deg
+    cut_a = compensated_side(profile, "A", offset, params.lead_mm, method)
+    cut_b = compensated_side(profile, "B", offset, params.lead_mm, method)
+    # Pivot positions (profile frame) of the ends of each side's cut.
+    start_a = _moved(cut_a.lead_in_start, 0.0, -shift)
+    end_a = _moved(cut_a.lead_out_end, 0.0, -shift)
+    start_b = _moved(cut_b.lead_in_start, 0.0, shift)
+    end_b = _moved(cut_b.lead_out_end, 0.0, shift)
+
+    margin = params.tilt_clearance_mm
+    tilt_x = max(profile.length_mm + params.tool_radius_mm + margin, end_a[0], start_b[0])
+
+    def machine(points: list[Point]) -> list[Point]:
+        return [_moved(point, x0, y0) for point in points]
+
+    approach = list(reversed(_route(start_a, home, box, margin)))
+    leave_a = [end_a, (tilt_x, end_a[1])]
+    cross = [(tilt_x, end_a[1]), (tilt_x, start_b[1])]
+    enter_b = [(tilt_x, start_b[1]), start_b]
+    go_home = _route(end_b, home, box, margin)
+
+    segments: list[Segment] = []
+    segments += _travel(machine(approach), params.home_z_deg, alpha)
+    segments += _cut_segments(cut_a, x0, y0 - shift, alpha)
+    segments += _travel(machine(leave_a), alpha, alpha)
+    segments += _travel(machine(cross), alpha, -alpha)
+    segments += _travel(machine(enter_b), -alpha, -alpha)
+    segments += _cut_segments(cut_b, x0, y0 + shift, -alpha)
+    segments += _travel(machine(go_home), -alpha, params.home_z_deg)
+    return ToolPath(segments=tuple(segments), params=params, profile=profile)
+
+
+def build_toolpath(profile: StaveProfile, params: ToolPathParams) -> ToolPath:
+    """The tool path of both sides; raises GeometryError for invalid parameters.
+
+    Also raised when the home position lies over the board (inside `keep_out_box`): no safe
+    approach exists from there.
+    """
+    return _build(profile, params, CompensationMethod.NORMAL)
+
+
+def build_original_toolpath(profile: StaveProfile, params: ToolPathParams) -> ToolPath:
+    """The same motion with the original program's y-only shift (for comparison only)."""
+    return _build(profile, params, CompensationMethod.Y_SHIFT)
