@@ -1,0 +1,854 @@
+"""The embedded database: recipes, system parameters, users, production and alarm history.
+
+One SQLite file (standard library) holds everything an operator or a technician must never
+lose. How that promise is kept:
+
+* WAL journal with ``synchronous=FULL``: a commit is on disk before the call returns, so neither
+  a killed process nor a power cut loses it, and readers (the screens, a backup) never block the
+  machine's writes.
+* Every public write is exactly one transaction (``BEGIN IMMEDIATE`` ... ``COMMIT``): a batch of
+  recipes, a set of parameters with their change log, a piece - all or nothing.
+* Nothing invalid is stored: recipes pass the geometry's validation plus the recipe rules,
+  parameters the catalogue, records their own checks, all before the transaction; STRICT tables
+  and CHECK constraints catch anything that slips past.
+* The schema has a version and forward migrations (``app.data.schema``); creating a database
+  (tables, default users, parameters, sample recipes) is itself one transaction, so a crash
+  during creation leaves an empty file that the next start creates again.
+
+Permissions are checked here, against the role stored for the user (not the one a caller
+claims): editing recipes needs :data:`RECIPE_EDIT_ROLE`, deleting them
+:data:`RECIPE_DELETE_ROLE`, each parameter its catalogue role, adding users
+:data:`USER_ADMIN_ROLE`.
+
+One connection per Database object, used from one thread (the machine process writes from its
+own thread; the GUI process opens its own Database). Times come from ``clock`` so tests and
+simulations run on simulated time.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import sqlite3
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import replace
+from datetime import UTC, datetime
+from pathlib import Path
+from types import TracebackType
+from typing import Any
+
+from app.data.errors import (
+    DatabaseOpenError,
+    NotFoundError,
+    ParameterError,
+    PermissionDeniedError,
+    PinError,
+    RecipeValidationError,
+    RecordError,
+    SchemaVersionError,
+)
+from app.data.parameters import (
+    DEFAULT_PARAMETERS,
+    PARAMETER_BY_NAME,
+    PARAMETERS,
+    check_parameter_set,
+    check_parameter_value,
+    parameter_spec,
+    unknown_parameter,
+)
+from app.data.recipe import Recipe, TiltMode, recipe_to_mapping
+from app.data.recipe_files import load_recipe_file
+from app.data.records import (
+    AlarmEvent,
+    AlarmEventFilter,
+    AlarmState,
+    ParameterChange,
+    PieceResult,
+    ProductionRecord,
+    RecipeChange,
+    format_utc,
+    parse_utc,
+    to_utc,
+)
+from app.data.schema import SCHEMA_VERSION, apply_migrations, read_schema_version, user_table_names
+from app.data.users import DEFAULT_USERS, Role, User, check_pin_format, hash_pin, verify_pin
+from app.geometry.errors import FieldError
+from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
+from app.geometry.ratio import Ratio
+
+_log = logging.getLogger(__name__)
+
+SAMPLE_RECIPES_PATH = (
+    Path(__file__).resolve().parents[2] / "resources" / "recipes" / ("sample_recipes.json")
+)
+"""Recipes a brand-new database starts with (the repository's ``resources/recipes``)."""
+
+RECIPE_EDIT_ROLE = Role.OPERATOR
+"""Creating, changing and copying recipes: production work, every operator may do it."""
+RECIPE_DELETE_ROLE = Role.TECHNICIAN
+"""Deleting a recipe (its last version stays in the recipe history)."""
+RECIPE_IMPORT_ROLE = Role.TECHNICIAN
+"""Importing recipe files (may change many recipes at once)."""
+USER_ADMIN_ROLE = Role.SERVICE
+"""Adding users."""
+
+SYSTEM_USER = "system"
+"""Name logged for changes the software makes by itself (defaults of a new database)."""
+
+_RECIPE_COLUMNS = (
+    "id, name, length_mm, thickness_mm, length_ratio_num, length_ratio_den, width_ratio_num, "
+    "width_ratio_den, tilt_mode, tilt_deg, barrel_diameter_mm, barrel_perimeter_mm, note"
+)
+_PRODUCTION_COLUMNS = (
+    "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
+    "alarm_code"
+)
+_ALARM_COLUMNS = "id, time, code, text, source, from_state, to_state, user_name"
+
+
+def _recipe_from_row(row: sqlite3.Row) -> Recipe:
+    return Recipe(
+        id=int(row["id"]),
+        name=str(row["name"]),
+        length_mm=float(row["length_mm"]),
+        thickness_mm=float(row["thickness_mm"]),
+        length_ratio=Ratio(int(row["length_ratio_num"]), int(row["length_ratio_den"])),
+        width_ratio=Ratio(int(row["width_ratio_num"]), int(row["width_ratio_den"])),
+        tilt_mode=TiltMode(row["tilt_mode"]),
+        tilt_deg=float(row["tilt_deg"]),
+        barrel_diameter_mm=_opt_float(row["barrel_diameter_mm"]),
+        barrel_perimeter_mm=_opt_float(row["barrel_perimeter_mm"]),
+        note=str(row["note"]),
+    )
+
+
+def _opt_float(value: Any) -> float | None:
+    return None if value is None else float(value)
+
+
+def _opt_int(value: Any) -> int | None:
+    return None if value is None else int(value)
+
+
+def _production_from_row(row: sqlite3.Row) -> ProductionRecord:
+    return ProductionRecord(
+        id=int(row["id"]),
+        time=parse_utc(row["time"]),
+        recipe_id=_opt_int(row["recipe_id"]),
+        recipe_name=str(row["recipe_name"]),
+        width_mm=_opt_float(row["width_mm"]),
+        d_mm=_opt_float(row["d_mm"]),
+        r_mm=_opt_float(row["r_mm"]),
+        tilt_deg=_opt_float(row["tilt_deg"]),
+        cycle_time_s=float(row["cycle_time_s"]),
+        result=PieceResult(row["result"]),
+        alarm_code=row["alarm_code"],
+    )
+
+
+def _alarm_from_row(row: sqlite3.Row) -> AlarmEvent:
+    return AlarmEvent(
+        id=int(row["id"]),
+        time=parse_utc(row["time"]),
+        code=str(row["code"]),
+        text=str(row["text"]),
+        source=str(row["source"]),
+        from_state=AlarmState(row["from_state"]),
+        to_state=AlarmState(row["to_state"]),
+        user_name=row["user_name"],
+    )
+
+
+def _recipe_json(recipe: Recipe) -> str:
+    return json.dumps({"id": recipe.id, **recipe_to_mapping(recipe)}, ensure_ascii=False)
+
+
+def _same_content(a: Recipe, b: Recipe) -> bool:
+    return replace(a, id=None) == replace(b, id=None)
+
+
+class Database:
+    """The application's database; create with :meth:`open`, use as a context manager."""
+
+    def __init__(
+        self,
+        connection: sqlite3.Connection,
+        path: Path,
+        limits: StaveLimits,
+        clock: Callable[[], datetime],
+    ) -> None:
+        """Use :meth:`open`; this only wires an already configured connection."""
+        self._conn = connection
+        self._path = path
+        self.limits = limits
+        self._clock = clock
+
+    # ------------------------------------------------------------------ lifecycle
+
+    @classmethod
+    def open(
+        cls,
+        path: Path | str,
+        *,
+        limits: StaveLimits | None = None,
+        clock: Callable[[], datetime] | None = None,
+        busy_timeout_s: float = 10.0,
+        samples_path: Path | None = SAMPLE_RECIPES_PATH,
+    ) -> Database:
+        """Open (creating or migrating as needed) the database at ``path``.
+
+        A brand-new database gets the schema, the default users, the default parameters and
+        the sample recipes of ``samples_path`` (None: no samples), all in one transaction.
+        ``limits`` are the machine limits recipes are validated against; ``clock`` gives the
+        time stamps (UTC now by default). Raises DatabaseOpenError (SchemaVersionError for a
+        file from newer software) with the path and the reason.
+        """
+        db_path = Path(path)
+        try:
+            db_path.parent.mkdir(parents=True, exist_ok=True)
+            connection = sqlite3.connect(db_path, timeout=busy_timeout_s, isolation_level=None)
+        except (OSError, sqlite3.Error) as exc:
+            raise DatabaseOpenError(f"{db_path}: cannot open the database ({exc})") from None
+        connection.row_factory = sqlite3.Row
+        try:
+            mode = str(connection.execute("PRAGMA journal_mode = WAL").fetchone()[0])
+            if mode.lower() != "wal":
+                raise DatabaseOpenError(
+                    f"{db_path}: the file system does not support SQLite's WAL journal "
+                    f"(journal mode {mode!r}); use a local disk"
+                )
+            connection.execute("PRAGMA synchronous = FULL")
+            connection.execute("PRAGMA foreign_keys = ON")
+            database = cls(
+                connection,
+                db_path,
+                DEFAULT_LIMITS if limits is None else limits,
+                clock if clock is not None else (lambda: datetime.now(UTC)),
+            )
+            database._prepare(samples_path)
+        except sqlite3.DatabaseError as exc:
+            connection.close()
+            raise DatabaseOpenError(
+                f"{db_path}: not a usable stave-jointer database ({exc})"
+            ) from None
+        except BaseException:
+            connection.close()
+            raise
+        return database
+
+    def _prepare(self, samples_path: Path | None) -> None:
+        """Create, migrate and complete the database as needed (one transaction, if any)."""
+        version = read_schema_version(self._conn)
+        self._check_version(version)
+        if version == SCHEMA_VERSION and not self._missing_parameters():
+            return
+        sample_recipes: list[Recipe] = []
+        if version == 0 and samples_path is not None:
+            sample_recipes = self._read_samples(samples_path)
+        default_hashes = [hash_pin(pin) for _, _, pin in DEFAULT_USERS] if version == 0 else []
+        with self._write() as conn:
+            version = read_schema_version(conn)  # again, now under the write lock
+            self._check_version(version)
+            if version == 0:
+                tables = user_table_names(conn)
+                if tables:
+                    raise DatabaseOpenError(
+                        f"{self._path}: not a stave-jointer database (it has the tables "
+                        f"{', '.join(sorted(tables))} but no schema version)"
+                    )
+            if version < SCHEMA_VERSION:
+                apply_migrations(conn, version)
+                _log.info("%s: schema v%d -> v%d", self._path, version, SCHEMA_VERSION)
+            if version == 0:
+                self._seed(conn, sample_recipes, default_hashes)
+            self._insert_missing_parameters(conn)
+
+    def _check_version(self, version: int) -> None:
+        if version > SCHEMA_VERSION:
+            raise SchemaVersionError(
+                f"{self._path}: schema version {version} was written by newer software; "
+                f"this version knows up to {SCHEMA_VERSION}"
+            )
+
+    def _read_samples(self, samples_path: Path) -> list[Recipe]:
+        if not samples_path.exists():
+            _log.warning("sample recipes %s not found: new database starts empty", samples_path)
+            return []
+        recipes = load_recipe_file(samples_path)
+        for recipe in recipes:
+            errors = recipe.validate(self.limits)
+            if errors:
+                raise RecipeValidationError(f"sample recipe {recipe.name!r}", errors)
+        return recipes
+
+    def _seed(
+        self, conn: sqlite3.Connection, recipes: Sequence[Recipe], pin_hashes: Sequence[str]
+    ) -> None:
+        now = format_utc(self._clock())
+        for (name, role, _), pin_hash in zip(DEFAULT_USERS, pin_hashes, strict=True):
+            conn.execute(
+                "INSERT INTO users (name, role, pin_hash, updated_at) VALUES (?, ?, ?, ?)",
+                (name, role.label, pin_hash, now),
+            )
+        for recipe in recipes:
+            self._insert_recipe(conn, recipe, SYSTEM_USER, now)
+
+    def _missing_parameters(self) -> list[str]:
+        stored = {str(row[0]) for row in self._conn.execute("SELECT name FROM parameters")}
+        return [spec.name for spec in PARAMETERS if spec.name not in stored]
+
+    def _insert_missing_parameters(self, conn: sqlite3.Connection) -> None:
+        """Store the default of every catalogue parameter the file lacks, and log it."""
+        now = format_utc(self._clock())
+        for name in self._missing_parameters():
+            value = DEFAULT_PARAMETERS[name]
+            conn.execute(
+                "INSERT INTO parameters (name, value, updated_at, updated_by) VALUES (?, ?, ?, ?)",
+                (name, value, now, SYSTEM_USER),
+            )
+            conn.execute(
+                "INSERT INTO parameter_changes (time, name, old_value, new_value, user_name, "
+                "user_role) VALUES (?, ?, NULL, ?, ?, ?)",
+                (now, name, value, SYSTEM_USER, SYSTEM_USER),
+            )
+
+    def close(self) -> None:
+        """Close the connection (the last one to close also checkpoints the WAL)."""
+        self._conn.close()
+
+    def __enter__(self) -> Database:
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        traceback: TracebackType | None,
+    ) -> None:
+        self.close()
+
+    @property
+    def path(self) -> Path:
+        """The database file."""
+        return self._path
+
+    @property
+    def schema_version(self) -> int:
+        """The schema version of the file (always the current one once open)."""
+        return read_schema_version(self._conn)
+
+    @contextmanager
+    def _write(self) -> Iterator[sqlite3.Connection]:
+        """One write transaction: committed if the block ends, rolled back if it raises."""
+        self._conn.execute("BEGIN IMMEDIATE")
+        try:
+            yield self._conn
+        except BaseException:
+            self._conn.execute("ROLLBACK")
+            raise
+        try:
+            self._conn.execute("COMMIT")
+        except BaseException:
+            if self._conn.in_transaction:
+                self._conn.execute("ROLLBACK")
+            raise
+
+    def _now(self) -> str:
+        return format_utc(self._clock())
+
+    def integrity_problems(self) -> list[str]:
+        """What ``PRAGMA integrity_check`` and ``foreign_key_check`` find (empty: healthy)."""
+        rows = [str(row[0]) for row in self._conn.execute("PRAGMA integrity_check")]
+        problems = [] if rows == ["ok"] else rows
+        for row in self._conn.execute("PRAGMA foreign_key_check"):
+            problems.append(f"foreign key: table {row[0]} row {row[1]} -> {row[2]}")
+        return problems
+
+    # ------------------------------------------------------------------ users and roles
+
+    def _stored_user(self, user: User) -> User:
+        row = self._conn.execute("SELECT id, name, role FROM users WHERE id = ?", (user.id,))
+        found = row.fetchone()
+        if found is None or str(found["name"]).casefold() != user.name.casefold():
+            raise PermissionDeniedError(f"user {user.name!r} is not a user of this database")
+        return User(int(found["id"]), str(found["name"]), Role.from_label(found["role"]))
+
+    def check_role(self, user: User, required: Role, action: str) -> User:
+        """The stored user if its role allows ``action``; else PermissionDeniedError."""
+        stored = self._stored_user(user)
+        if stored.role < required:
+            raise PermissionDeniedError(
+                f"{action} needs the role {required.label} or higher; "
+                f"user {stored.name!r} is {stored.role.label}"
+            )
+        return stored
+
+    def list_users(self) -> list[User]:
+        """All users, by id."""
+        rows = self._conn.execute("SELECT id, name, role FROM users ORDER BY id")
+        return [User(int(r["id"]), str(r["name"]), Role.from_label(r["role"])) for r in rows]
+
+    def authenticate(self, pin: str) -> User | None:
+        """The user whose PIN this is, or None (a malformed PIN is simply no match)."""
+        try:
+            check_pin_format(pin)
+        except ValueError:
+            return None
+        rows = self._conn.execute("SELECT id, name, role, pin_hash FROM users ORDER BY id")
+        for row in rows.fetchall():
+            if verify_pin(pin, str(row["pin_hash"])):
+                return User(int(row["id"]), str(row["name"]), Role.from_label(row["role"]))
+        return None
+
+    def _pin_taken(self, pin: str, except_user_id: int | None) -> bool:
+        rows = self._conn.execute("SELECT id, pin_hash FROM users").fetchall()
+        return any(
+            int(row["id"]) != except_user_id and verify_pin(pin, str(row["pin_hash"]))
+            for row in rows
+        )
+
+    def set_pin(self, user: User, new_pin: str, by_user: User) -> None:
+        """Change ``user``'s PIN. Allowed to the user itself, to a higher role, and to service.
+
+        PINs identify users, so one already used by another user is refused (PinError).
+        """
+        try:
+            check_pin_format(new_pin)
+        except ValueError as exc:
+            raise PinError(str(exc)) from None
+        self._check_pin_permission(user, by_user)
+        if self._pin_taken(new_pin, user.id):
+            raise PinError("pin: this PIN is already used by another user; choose another")
+        pin_hash = hash_pin(new_pin)
+        with self._write() as conn:
+            self._check_pin_permission(user, by_user)
+            conn.execute(
+                "UPDATE users SET pin_hash = ?, updated_at = ? WHERE id = ?",
+                (pin_hash, self._now(), user.id),
+            )
+
+    def _check_pin_permission(self, user: User, by_user: User) -> None:
+        target = self._stored_user(user)
+        actor = self._stored_user(by_user)
+        if actor.id != target.id and actor.role <= target.role and actor.role < Role.SERVICE:
+            raise PermissionDeniedError(
+                f"changing the PIN of {target.name!r} ({target.role.label}) needs a higher role "
+                f"than {target.role.label}; user {actor.name!r} is {actor.role.label}"
+            )
+
+    def add_user(self, name: str, role: Role, pin: str, by_user: User) -> User:
+        """Add a user (needs USER_ADMIN_ROLE); name 1..40 characters, unique; PIN unused."""
+        clean = name.strip() if isinstance(name, str) else ""
+        if not 1 <= len(clean) <= 40:
+            raise PinError(f"name: {name!r} is not allowed: 1 to 40 characters")
+        if not isinstance(role, Role):
+            raise PinError(f"role: {role!r} is not allowed: one of operator, technician, service")
+        try:
+            check_pin_format(pin)
+        except ValueError as exc:
+            raise PinError(str(exc)) from None
+        self.check_role(by_user, USER_ADMIN_ROLE, "adding a user")
+        if self._pin_taken(pin, None):
+            raise PinError("pin: this PIN is already used by another user; choose another")
+        pin_hash = hash_pin(pin)
+        with self._write() as conn:
+            self.check_role(by_user, USER_ADMIN_ROLE, "adding a user")
+            if conn.execute("SELECT 1 FROM users WHERE name = ?", (clean,)).fetchone():
+                raise PinError(f"name: {clean!r} is already a user")
+            cursor = conn.execute(
+                "INSERT INTO users (name, role, pin_hash, updated_at) VALUES (?, ?, ?, ?)",
+                (clean, role.label, pin_hash, self._now()),
+            )
+        return User(int(cursor.lastrowid or 0), clean, role)
+
+    # ------------------------------------------------------------------ recipes
+
+    def list_recipes(self) -> list[Recipe]:
+        """All recipes, by id (the order the Main screen steps through)."""
+        rows = self._conn.execute(f"SELECT {_RECIPE_COLUMNS} FROM recipes ORDER BY id")
+        return [_recipe_from_row(row) for row in rows]
+
+    def get_recipe(self, recipe_id: int) -> Recipe:
+        """The recipe with this id; NotFoundError if there is none."""
+        row = self._conn.execute(
+            f"SELECT {_RECIPE_COLUMNS} FROM recipes WHERE id = ?", (recipe_id,)
+        ).fetchone()
+        if row is None:
+            raise NotFoundError(f"recipe id {recipe_id!r} does not exist")
+        return _recipe_from_row(row)
+
+    def get_recipe_by_name(self, name: str) -> Recipe | None:
+        """The recipe with this name (letter case ignored), or None."""
+        row = self._conn.execute(
+            f"SELECT {_RECIPE_COLUMNS} FROM recipes WHERE name = ?", (name.strip(),)
+        ).fetchone()
+        return None if row is None else _recipe_from_row(row)
+
+    def save_recipe(self, recipe: Recipe, user: User) -> Recipe:
+        """Insert (``id`` None) or update a recipe; returns it as stored, with its id.
+
+        Raises RecipeValidationError listing every invalid field (nothing is stored),
+        NotFoundError for an update of a recipe that no longer exists, PermissionDeniedError.
+        """
+        return self.save_recipes([recipe], user)[0]
+
+    def save_recipes(self, recipes: Sequence[Recipe], user: User) -> list[Recipe]:
+        """Insert or update several recipes in one transaction: all of them or none."""
+        for recipe in recipes:
+            errors = recipe.validate(self.limits)
+            if errors:
+                raise RecipeValidationError(f"recipe {recipe.name!r}", errors)
+        saved: list[Recipe] = []
+        with self._write() as conn:
+            actor = self.check_role(user, RECIPE_EDIT_ROLE, "changing recipes")
+            now = self._now()
+            for recipe in recipes:
+                clash = conn.execute(
+                    "SELECT id FROM recipes WHERE name = ?", (recipe.name,)
+                ).fetchone()
+                if clash is not None and int(clash["id"]) != recipe.id:
+                    allowed = "a name no other recipe has"
+                    message = (
+                        f"name = {recipe.name!r} is already used by recipe {clash['id']}: "
+                        f"allowed {allowed}"
+                    )
+                    error = FieldError("name", recipe.name, allowed, message)
+                    raise RecipeValidationError(f"recipe {recipe.name!r}", [error])
+                if recipe.id is None:
+                    saved.append(self._insert_recipe(conn, recipe, actor.name, now))
+                else:
+                    saved.append(self._update_recipe(conn, recipe, actor.name, now))
+        return saved
+
+    def _insert_recipe(
+        self, conn: sqlite3.Connection, recipe: Recipe, user_name: str, now: str
+    ) -> Recipe:
+        cursor = conn.execute(
+            "INSERT INTO recipes (name, length_mm, thickness_mm, length_ratio_num, "
+            "length_ratio_den, width_ratio_num, width_ratio_den, tilt_mode, tilt_deg, "
+            "barrel_diameter_mm, barrel_perimeter_mm, note, created_at, created_by, "
+            "updated_at, updated_by) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            (
+                *self._recipe_values(recipe),
+                now,
+                user_name,
+                now,
+                user_name,
+            ),
+        )
+        stored = replace(recipe, id=int(cursor.lastrowid or 0))
+        self._log_recipe(conn, now, stored.id, stored.name, "create", user_name, None, stored)
+        return stored
+
+    def _update_recipe(
+        self, conn: sqlite3.Connection, recipe: Recipe, user_name: str, now: str
+    ) -> Recipe:
+        row = conn.execute(
+            f"SELECT {_RECIPE_COLUMNS} FROM recipes WHERE id = ?", (recipe.id,)
+        ).fetchone()
+        if row is None:
+            raise NotFoundError(f"recipe id {recipe.id!r} does not exist (deleted meanwhile?)")
+        before = _recipe_from_row(row)
+        if before == recipe:
+            return before
+        conn.execute(
+            "UPDATE recipes SET name = ?, length_mm = ?, thickness_mm = ?, length_ratio_num = ?, "
+            "length_ratio_den = ?, width_ratio_num = ?, width_ratio_den = ?, tilt_mode = ?, "
+            "tilt_deg = ?, barrel_diameter_mm = ?, barrel_perimeter_mm = ?, note = ?, "
+            "updated_at = ?, updated_by = ? WHERE id = ?",
+            (*self._recipe_values(recipe), now, user_name, recipe.id),
+        )
+        self._log_recipe(conn, now, recipe.id, recipe.name, "update", user_name, before, recipe)
+        return recipe
+
+    @staticmethod
+    def _recipe_values(recipe: Recipe) -> tuple[object, ...]:
+        return (
+            recipe.name,
+            float(recipe.length_mm),
+            float(recipe.thickness_mm),
+            recipe.length_ratio.numerator,
+            recipe.length_ratio.denominator,
+            recipe.width_ratio.numerator,
+            recipe.width_ratio.denominator,
+            recipe.tilt_mode.value,
+            float(recipe.tilt_deg),
+            _opt_float(recipe.barrel_diameter_mm),
+            _opt_float(recipe.barrel_perimeter_mm),
+            recipe.note,
+        )
+
+    @staticmethod
+    def _log_recipe(
+        conn: sqlite3.Connection,
+        now: str,
+        recipe_id: int | None,
+        name: str,
+        action: str,
+        user_name: str,
+        before: Recipe | None,
+        after: Recipe | None,
+    ) -> None:
+        conn.execute(
+            "INSERT INTO recipe_changes (time, recipe_id, recipe_name, action, user_name, "
+            "before_json, after_json) VALUES (?, ?, ?, ?, ?, ?, ?)",
+            (
+                now,
+                recipe_id,
+                name,
+                action,
+                user_name,
+                None if before is None else _recipe_json(before),
+                None if after is None else _recipe_json(after),
+            ),
+        )
+
+    def delete_recipe(self, recipe_id: int, user: User) -> Recipe:
+        """Delete a recipe; returns it. Its last version stays in :meth:`recipe_history`.
+
+        Production records keep the recipe's name (their recipe id becomes None).
+        """
+        with self._write() as conn:
+            actor = self.check_role(user, RECIPE_DELETE_ROLE, "deleting recipes")
+            row = conn.execute(
+                f"SELECT {_RECIPE_COLUMNS} FROM recipes WHERE id = ?", (recipe_id,)
+            ).fetchone()
+            if row is None:
+                raise NotFoundError(f"recipe id {recipe_id!r} does not exist")
+            before = _recipe_from_row(row)
+            conn.execute("DELETE FROM recipes WHERE id = ?", (recipe_id,))
+            self._log_recipe(
+                conn, self._now(), recipe_id, before.name, "delete", actor.name, before, None
+            )
+        return before
+
+    def copy_recipe(self, recipe_id: int, new_name: str, user: User) -> Recipe:
+        """A new recipe like ``recipe_id`` under ``new_name`` (validated like any recipe)."""
+        source = self.get_recipe(recipe_id)
+        return self.save_recipe(replace(source, id=None, name=new_name), user)
+
+    def recipe_history(self, recipe_id: int | None = None, limit: int = 1000) -> list[RecipeChange]:
+        """Logged recipe changes, newest first (all recipes, or one id, deleted ones included)."""
+        where, params = ("WHERE recipe_id = ?", [recipe_id]) if recipe_id is not None else ("", [])
+        rows = self._conn.execute(
+            "SELECT id, time, recipe_id, recipe_name, action, user_name, before_json, after_json "
+            f"FROM recipe_changes {where} ORDER BY time DESC, id DESC LIMIT ?",
+            (*params, int(limit)),
+        )
+        return [
+            RecipeChange(
+                id=int(row["id"]),
+                time=parse_utc(row["time"]),
+                recipe_id=_opt_int(row["recipe_id"]),
+                recipe_name=str(row["recipe_name"]),
+                action=str(row["action"]),
+                user_name=str(row["user_name"]),
+                before_json=row["before_json"],
+                after_json=row["after_json"],
+            )
+            for row in rows
+        ]
+
+    # ------------------------------------------------------------------ system parameters
+
+    def get_parameters(self) -> dict[str, float]:
+        """Every catalogue parameter's current value, in catalogue order."""
+        stored = {
+            str(row["name"]): float(row["value"])
+            for row in self._conn.execute("SELECT name, value FROM parameters")
+        }
+        return {spec.name: float(stored.get(spec.name, spec.default)) for spec in PARAMETERS}
+
+    def get_parameter(self, name: str) -> float:
+        """One parameter's value (KeyError naming close matches for an unknown name)."""
+        spec = parameter_spec(name)
+        return self.get_parameters()[spec.name]
+
+    def set_parameter(self, name: str, value: float, user: User) -> None:
+        """Change one parameter (validated, role-checked, logged); see :meth:`set_parameters`."""
+        self.set_parameters({name: value}, user)
+
+    def set_parameters(self, values: Mapping[str, float], user: User) -> None:
+        """Change several parameters in one transaction, each change logged with user and time.
+
+        Every value is checked against the catalogue and the whole set against the rules
+        between parameters before anything is stored: ParameterError lists all problems.
+        An unchanged value is not logged.
+        """
+        errors: list[FieldError] = []
+        for name, value in values.items():
+            if name not in PARAMETER_BY_NAME:
+                errors.append(unknown_parameter(name, value))
+                continue
+            error = check_parameter_value(PARAMETER_BY_NAME[name], value)
+            if error is not None:
+                errors.append(error)
+        if errors:
+            raise ParameterError("parameters", errors)
+        with self._write() as conn:
+            actor = self._stored_user(user)
+            for name in values:
+                spec = PARAMETER_BY_NAME[name]
+                self.check_role(user, spec.required_role, f"changing {name}")
+            current = self.get_parameters()
+            proposed = {**current, **{name: float(value) for name, value in values.items()}}
+            cross = check_parameter_set(proposed)
+            if cross:
+                raise ParameterError("parameters", cross)
+            now = self._now()
+            for name, value in proposed.items():
+                if name not in values or value == current[name]:
+                    continue
+                conn.execute(
+                    "UPDATE parameters SET value = ?, updated_at = ?, updated_by = ? "
+                    "WHERE name = ?",
+                    (value, now, actor.name, name),
+                )
+                conn.execute(
+                    "INSERT INTO parameter_changes (time, name, old_value, new_value, user_name, "
+                    "user_role) VALUES (?, ?, ?, ?, ?, ?)",
+                    (now, name, current[name], value, actor.name, actor.role.label),
+                )
+
+    def parameter_history(
+        self,
+        name: str | None = None,
+        start: datetime | None = None,
+        end: datetime | None = None,
+        limit: int = 1000,
+    ) -> list[ParameterChange]:
+        """Logged parameter changes, newest first; optionally one parameter, [start, end)."""
+        conditions: list[str] = []
+        params: list[object] = []
+        if name is not None:
+            conditions.append("name = ?")
+            params.append(name)
+        if start is not None:
+            conditions.append("time >= ?")
+            params.append(format_utc(start))
+        if end is not None:
+            conditions.append("time < ?")
+            params.append(format_utc(end))
+        where = f"WHERE {' AND '.join(conditions)}" if conditions else ""
+        rows = self._conn.execute(
+            "SELECT id, time, name, old_value, new_value, user_name, user_role FROM "
+            f"parameter_changes {where} ORDER BY time DESC, id DESC LIMIT ?",
+            (*params, int(limit)),
+        )
+        return [
+            ParameterChange(
+                id=int(row["id"]),
+                time=parse_utc(row["time"]),
+                name=str(row["name"]),
+                old_value=_opt_float(row["old_value"]),
+                new_value=float(row["new_value"]),
+                user_name=str(row["user_name"]),
+                user_role=str(row["user_role"]),
+            )
+            for row in rows
+        ]
+
+    # ------------------------------------------------------------------ production
+
+    def record_piece(self, record: ProductionRecord) -> ProductionRecord:
+        """Store one board's record; returns it as stored (id set, time in UTC).
+
+        A recipe deleted meanwhile does not lose the count: the record keeps the recipe's
+        name and its recipe id becomes None.
+        """
+        problems = record.problems()
+        if problems:
+            raise RecordError("production record not saved: " + "; ".join(problems))
+        stored = replace(record, time=to_utc(record.time))
+        with self._write() as conn:
+            recipe_id: int | None = None
+            if record.recipe_id is not None:
+                found = conn.execute(
+                    "SELECT id FROM recipes WHERE id = ?", (record.recipe_id,)
+                ).fetchone()
+                recipe_id = None if found is None else int(found["id"])
+            cursor = conn.execute(
+                "INSERT INTO production (time, recipe_id, recipe_name, width_mm, d_mm, r_mm, "
+                "tilt_deg, cycle_time_s, result, alarm_code) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                (
+                    format_utc(stored.time),
+                    recipe_id,
+                    stored.recipe_name,
+                    _opt_float(stored.width_mm),
+                    _opt_float(stored.d_mm),
+                    _opt_float(stored.r_mm),
+                    _opt_float(stored.tilt_deg),
+                    float(stored.cycle_time_s),
+                    stored.result.value,
+                    stored.alarm_code,
+                ),
+            )
+        return replace(stored, id=int(cursor.lastrowid or 0), recipe_id=recipe_id)
+
+    def list_production(self, start: datetime, end: datetime) -> list[ProductionRecord]:
+        """Records with ``start <= time < end``, oldest first."""
+        rows = self._conn.execute(
+            f"SELECT {_PRODUCTION_COLUMNS} FROM production WHERE time >= ? AND time < ? "
+            "ORDER BY time, id",
+            (format_utc(start), format_utc(end)),
+        )
+        return [_production_from_row(row) for row in rows]
+
+    def piece_counts(self, shift_start: datetime) -> tuple[int, int]:
+        """(finished staves since ``shift_start``, finished staves ever); one consistent read."""
+        row = self._conn.execute(
+            "SELECT (SELECT count(*) FROM production WHERE result = 'ok' AND time >= ?), "
+            "(SELECT count(*) FROM production WHERE result = 'ok')",
+            (format_utc(shift_start),),
+        ).fetchone()
+        return int(row[0]), int(row[1])
+
+    # ------------------------------------------------------------------ alarms
+
+    def record_alarm_event(self, event: AlarmEvent) -> AlarmEvent:
+        """Store one alarm state transition; returns it as stored (id set, time in UTC)."""
+        problems = event.problems()
+        if problems:
+            raise RecordError("alarm event not saved: " + "; ".join(problems))
+        stored = replace(event, time=to_utc(event.time))
+        with self._write() as conn:
+            cursor = conn.execute(
+                "INSERT INTO alarm_events (time, code, text, source, from_state, to_state, "
+                "user_name) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                (
+                    format_utc(stored.time),
+                    stored.code,
+                    stored.text,
+                    stored.source,
+                    stored.from_state.value,
+                    stored.to_state.value,
+                    stored.user_name,
+                ),
+            )
+        return replace(stored, id=int(cursor.lastrowid or 0))
+
+    def list_alarm_events(self, filters: AlarmEventFilter | None = None) -> list[AlarmEvent]:
+        """Alarm transitions matching ``filters`` (all of them if None), newest first."""
+        chosen = AlarmEventFilter() if filters is None else filters
+        conditions: list[str] = []
+        params: list[object] = []
+        if chosen.start is not None:
+            conditions.append("time >= ?")
+            params.append(format_utc(chosen.start))
+        if chosen.end is not None:
+            conditions.append("time < ?")
+            params.append(format_utc(chosen.end))
+        if chosen.code is not None:
+            conditions.append("code = ?")
+            params.append(chosen.code)
+        if chosen.source is not None:
+            conditions.append("source = ?")
+            params.append(chosen.source)
+        where = f"WHERE {' AND '.join(conditions)}" if conditions else ""
+        rows = self._conn.execute(
+            f"SELECT {_ALARM_COLUMNS} FROM alarm_events {where} ORDER BY time DESC, id DESC "
+            "LIMIT ?",
+            (*params, int(chosen.limit)),
+        )
+        return [_alarm_from_row(row) for row in rows]

@@ -1,0 +1,433 @@
+"""The recipe model: what a cooper enters for one kind of stave.
+
+A recipe fixes the stave's length and thickness, the two ratios of the side profile (length
+ratio lambda = L1 : L and width ratio k = W1 : W, kept as the fractions the cooper typed, their
+decimals derived), and how the bevel is chosen:
+
+* ``TiltMode.FIXED``: every board is bevelled at ``tilt_deg``.
+* ``TiltMode.BARREL``: the bevel is computed for each board from its measured width and the
+  barrel's belly diameter (see :func:`tilt_for_width_deg`), so narrow and wide boards of one
+  barrel all close. ``tilt_deg`` is then the nominal tilt the recipe screen shows (for a typical
+  board); it is validated like a fixed tilt but the cut uses the computed value.
+
+Validation is the geometry's (``validate_recipe_fields``: length, thickness, ratios, tilt and
+the machine's limits) plus what only a stored recipe has: a name, the tilt mode, the barrel's
+belly diameter and perimeter, the note. Name uniqueness needs the database and is checked there.
+
+The row format (JSON object or CSV line, also what ``stave simulate --recipe-file`` reads) is
+:data:`ROW_KEYS`; :func:`recipe_from_mapping` reads it and :func:`recipe_to_mapping` writes it.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Mapping
+from dataclasses import dataclass
+from enum import Enum
+
+from app.data.errors import RecipeFormatError
+from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, validate_recipe_fields
+from app.geometry.ratio import Ratio
+
+NAME_MAX_CHARS = 40
+NOTE_MAX_CHARS = 500
+
+
+class TiltMode(Enum):
+    """How the bevel of a board is chosen."""
+
+    FIXED = "fixed"  # the recipe's tilt_deg for every board
+    BARREL = "barrel"  # computed per board from the barrel's belly diameter and the width
+
+
+@dataclass(frozen=True)
+class Recipe:
+    """One stored recipe. ``id`` is None until the database has stored it."""
+
+    id: int | None
+    name: str
+    length_mm: float
+    thickness_mm: float
+    length_ratio: Ratio
+    width_ratio: Ratio
+    tilt_mode: TiltMode
+    tilt_deg: float
+    barrel_diameter_mm: float | None
+    barrel_perimeter_mm: float | None
+    note: str = ""
+
+    @property
+    def length_ratio_decimal(self) -> float:
+        """lambda = L1 : L as a decimal (derived, never stored on its own)."""
+        return self.length_ratio.value
+
+    @property
+    def width_ratio_decimal(self) -> float:
+        """k = W1 : W as a decimal (derived, never stored on its own)."""
+        return self.width_ratio.value
+
+    def validate(self, limits: StaveLimits | None = None) -> list[FieldError]:
+        """Every reason this recipe cannot be stored (empty list: valid)."""
+        return validate_recipe(self, limits)
+
+    def tilt_for_width_deg(self, width_mm: float, limits: StaveLimits | None = None) -> float:
+        """The bevel for a board of this measured width; see :func:`tilt_for_width_deg`."""
+        return tilt_for_width_deg(self, width_mm, limits)
+
+
+def _check_name(name: object, errors: list[FieldError]) -> None:
+    allowed = f"1 to {NAME_MAX_CHARS} characters, no leading or trailing spaces"
+    if not isinstance(name, str):
+        errors.append(not_a_text("name", name, allowed))
+    elif not name.strip():
+        errors.append(FieldError("name", name, allowed, f"name is empty: allowed {allowed}"))
+    elif name != name.strip() or len(name) > NAME_MAX_CHARS:
+        errors.append(out_of_range("name", name, allowed))
+    elif any(not ch.isprintable() for ch in name):
+        message = f"name = {name!r} contains a control character: allowed {allowed}"
+        errors.append(FieldError("name", name, allowed, message))
+
+
+def not_a_text(field: str, value: object, allowed: str) -> FieldError:
+    """The error for a value that should have been text."""
+    message = f"{field} = {format_value(value)} is not text: allowed {allowed}"
+    return FieldError(field, value, allowed, message)
+
+
+def _diameter_bounds(limits: StaveLimits) -> tuple[float, float]:
+    low = 0.0 if limits.min_barrel_diameter_mm is None else limits.min_barrel_diameter_mm
+    high = math.inf if limits.max_barrel_diameter_mm is None else limits.max_barrel_diameter_mm
+    return low, high
+
+
+def _check_optional_positive(
+    field: str, value: object, low: float, high: float, errors: list[FieldError]
+) -> float | None:
+    if value is None:
+        return None
+    allowed = f"empty, or {format_value(low)} <= {field} <= {format_value(high)} mm"
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        errors.append(not_a_number(field, value, allowed))
+        return None
+    number = float(value)
+    if not math.isfinite(number):
+        errors.append(not_a_number(field, value, allowed))
+        return None
+    if not (low <= number <= high and number > 0):
+        errors.append(out_of_range(field, value, allowed))
+        return None
+    return number
+
+
+def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[FieldError]:
+    """Every reason ``recipe`` cannot be stored, the geometry's checks first."""
+    limits = DEFAULT_LIMITS if limits is None else limits
+    errors: list[FieldError] = []
+    _check_name(recipe.name, errors)
+
+    # A ratio that is not a Ratio goes to the geometry as it is: it reports it as not a number.
+    ratios: dict[str, object] = {
+        "length_ratio": _ratio_value(recipe.length_ratio),
+        "width_ratio": _ratio_value(recipe.width_ratio),
+    }
+    errors.extend(
+        validate_recipe_fields(
+            recipe.length_mm,
+            recipe.thickness_mm,
+            ratios["length_ratio"],
+            ratios["width_ratio"],
+            recipe.tilt_deg,
+            limits,
+        )
+    )
+
+    d_low, d_high = _diameter_bounds(limits)
+    diameter = _check_optional_positive(
+        "barrel_diameter_mm", recipe.barrel_diameter_mm, d_low, d_high, errors
+    )
+    _check_optional_positive(
+        "barrel_perimeter_mm", recipe.barrel_perimeter_mm, math.pi * d_low, math.pi * d_high, errors
+    )
+
+    if not isinstance(recipe.tilt_mode, TiltMode):
+        allowed = " or ".join(mode.value for mode in TiltMode)
+        message = f"tilt_mode = {format_value(recipe.tilt_mode)} is unknown: allowed {allowed}"
+        errors.append(FieldError("tilt_mode", recipe.tilt_mode, allowed, message))
+    elif recipe.tilt_mode is TiltMode.BARREL:
+        if recipe.barrel_diameter_mm is None:
+            allowed = f"{format_value(d_low)} <= barrel_diameter_mm <= {format_value(d_high)} mm"
+            message = (
+                f"barrel_diameter_mm is missing: tilt_mode 'barrel' computes the tilt from it "
+                f"(allowed {allowed})"
+            )
+            errors.append(FieldError("barrel_diameter_mm", None, allowed, message))
+        elif diameter is not None and isinstance(recipe.width_ratio, Ratio):
+            k = recipe.width_ratio.value
+            if 0 < k <= 1:
+                _check_barrel_widths(diameter, k, limits, errors)
+
+    if not isinstance(recipe.note, str):
+        errors.append(not_a_text("note", recipe.note, f"at most {NOTE_MAX_CHARS} characters"))
+    elif len(recipe.note) > NOTE_MAX_CHARS:
+        allowed = f"at most {NOTE_MAX_CHARS} characters"
+        message = f"note is {len(recipe.note)} characters long: allowed {allowed}"
+        errors.append(FieldError("note", recipe.note, allowed, message))
+    return errors
+
+
+def _ratio_value(ratio: object) -> object:
+    return ratio.value if isinstance(ratio, Ratio) else ratio
+
+
+def _check_barrel_widths(
+    diameter_mm: float, k: float, limits: StaveLimits, errors: list[FieldError]
+) -> None:
+    """A computed tilt must be possible for at least one board this recipe accepts.
+
+    Boards range from ``min_head_width / k`` (narrower ones give a head under the minimum) to the
+    maximum width; the computed tilt asin(W / Db) must stay within the tilt limits.
+    """
+    width_low = max(
+        limits.min_head_width_mm / k,
+        diameter_mm * math.sin(math.radians(limits.min_tilt_deg)),
+    )
+    width_high = min(limits.max_width_mm, diameter_mm * math.sin(math.radians(limits.max_tilt_deg)))
+    if width_low <= width_high:
+        return
+    allowed = (
+        f"a belly diameter for which some board of "
+        f"{format_value(round(limits.min_head_width_mm / k, 1))}.."
+        f"{format_value(limits.max_width_mm)} mm gets a tilt of "
+        f"{format_value(limits.min_tilt_deg)}..{format_value(limits.max_tilt_deg)} deg"
+    )
+    message = (
+        f"barrel_diameter_mm = {format_value(diameter_mm)} fits no board of this recipe: "
+        f"allowed {allowed}"
+    )
+    errors.append(FieldError("barrel_diameter_mm", diameter_mm, allowed, message))
+
+
+def tilt_for_width_deg(recipe: Recipe, width_mm: float, limits: StaveLimits | None = None) -> float:
+    """The bevel (deg) at which a board of measured width ``width_mm`` is cut under ``recipe``.
+
+    FIXED mode: the recipe's ``tilt_deg``, whatever the width.
+
+    BARREL mode, derivation: the barrel's cross-section at the belly is a circle of diameter Db
+    and the staves' joints are radial planes (they all meet on the barrel's axis; that is what
+    makes them close). A stave whose face on the table is W wide at the belly is a chord of
+    that circle, subtending the central angle 2*asin(W / Db). Each of its two joints lies in the
+    radial plane through one end of the chord, which is turned by half that angle from the
+    radius through the middle of the stave - and that radius is the normal of the stave's face.
+    So each side is bevelled by
+
+        alpha = asin(W / Db)
+
+    (a barrel of n equal staves has W = Db*sin(180/n), giving alpha = 180/n). The heads need no
+    other angle: with k = W1/W matched to the head diameter, W1/Dhead = W/Db. This is the inverse
+    of the geometry's ``barrel_diameter_mm(W, alpha) = W / sin(alpha)``.
+
+    Raises GeometryError (field ``width_mm`` or ``tilt_deg``) if the width is not a positive
+    finite number, or if the computed tilt falls outside the machine's tilt limits (W > Db at all,
+    or a board too wide for so small a barrel).
+    """
+    limits = DEFAULT_LIMITS if limits is None else limits
+    if recipe.tilt_mode is TiltMode.FIXED:
+        return float(recipe.tilt_deg)
+    diameter = recipe.barrel_diameter_mm
+    if diameter is None or not math.isfinite(diameter) or diameter <= 0:
+        allowed = "a positive barrel diameter (recipe in tilt mode 'barrel')"
+        message = f"barrel_diameter_mm = {format_value(diameter)} cannot give a tilt: {allowed}"
+        raise GeometryError([FieldError("barrel_diameter_mm", diameter, allowed, message)])
+    allowed_width = f"0 < width < barrel_diameter_mm = {format_value(diameter)} mm"
+    if isinstance(width_mm, bool) or not isinstance(width_mm, numbers.Real):
+        raise GeometryError([not_a_number("width_mm", width_mm, allowed_width)])
+    width = float(width_mm)
+    if not math.isfinite(width):
+        raise GeometryError([not_a_number("width_mm", width_mm, allowed_width)])
+    if not 0.0 < width < diameter:
+        raise GeometryError([out_of_range("width_mm", width_mm, allowed_width)])
+    tilt = math.degrees(math.asin(width / diameter))
+    if not limits.min_tilt_deg <= tilt <= limits.max_tilt_deg:
+        low, high = format_value(limits.min_tilt_deg), format_value(limits.max_tilt_deg)
+        allowed = f"{low} <= tilt <= {high} deg"
+        note = (
+            f"computed as asin(width_mm / barrel_diameter_mm) = asin({format_value(width)} / "
+            f"{format_value(diameter)})"
+        )
+        raise GeometryError([out_of_range("tilt_deg", round(tilt, 3), allowed, note)])
+    return tilt
+
+
+# ----------------------------------------------------------------------------- row format
+
+REQUIRED_KEYS: tuple[str, ...] = (
+    "name",
+    "length_mm",
+    "thickness_mm",
+    "length_ratio",
+    "width_ratio",
+    "tilt_deg",
+)
+OPTIONAL_KEYS: tuple[str, ...] = ("tilt_mode", "barrel_diameter_mm", "barrel_perimeter_mm", "note")
+ROW_KEYS: tuple[str, ...] = (*REQUIRED_KEYS[:5], "tilt_mode", "tilt_deg", *OPTIONAL_KEYS[1:])
+# An exported database id means nothing in another database: accepted and ignored.
+IGNORED_KEYS: frozenset[str] = frozenset({"id"})
+
+_NUMBER_ALLOWED = "a number"
+_RATIO_ALLOWED = "a fraction like '1/4' or a decimal like '0.25'"
+
+
+def _is_blank(value: object) -> bool:
+    return value is None or (isinstance(value, str) and not value.strip())
+
+
+def _read_number(key: str, value: object, errors: list[FieldError]) -> float | None:
+    unit = " mm" if key.endswith("_mm") else " deg" if key.endswith("_deg") else ""
+    allowed = f"{_NUMBER_ALLOWED}{unit}"
+    if isinstance(value, bool):
+        errors.append(not_a_number(key, value, allowed))
+        return None
+    if isinstance(value, numbers.Real):
+        number = float(value)
+    elif isinstance(value, str):
+        try:
+            number = float(value.strip())
+        except ValueError:
+            errors.append(not_a_number(key, value, allowed))
+            return None
+    else:
+        errors.append(not_a_number(key, value, allowed))
+        return None
+    if not math.isfinite(number):
+        errors.append(not_a_number(key, value, allowed))
+        return None
+    return number
+
+
+def _read_ratio(key: str, value: object, errors: list[FieldError]) -> Ratio | None:
+    try:
+        if isinstance(value, bool):
+            raise ValueError("a boolean is not a ratio")
+        if isinstance(value, numbers.Real):
+            return Ratio.from_float(float(value))
+        if isinstance(value, str):
+            return Ratio.parse(value)
+        raise ValueError("not text or a number")
+    except ValueError as exc:
+        message = f"{key} = {format_value(value)} is not a ratio ({exc}): allowed {_RATIO_ALLOWED}"
+        errors.append(FieldError(key, value, _RATIO_ALLOWED, message))
+        return None
+
+
+def _missing(key: str, allowed: str) -> FieldError:
+    return FieldError(key, None, allowed, f"{key} is missing: expected {allowed}")
+
+
+def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
+    """Read one recipe row (JSON object or CSV line as a dict); the result has ``id`` None.
+
+    Numbers may be numbers or text ("950", "27.5"); ratios "N/D" or a decimal; ``tilt_mode``
+    "fixed" (default) or "barrel"; empty optional fields are None. Raises RecipeFormatError
+    naming every missing, unknown or unreadable key. The values are only read here, not checked
+    against the machine's limits: that is :meth:`Recipe.validate`.
+    """
+    if not isinstance(row, Mapping):
+        allowed = f"an object with the keys {', '.join(ROW_KEYS)}"
+        message = f"recipe row = {format_value(row)} is not an object: expected {allowed}"
+        raise RecipeFormatError([FieldError("row", row, allowed, message)])
+    errors: list[FieldError] = []
+    known = set(ROW_KEYS) | IGNORED_KEYS
+    for key in row:
+        if key not in known:
+            allowed = ", ".join(ROW_KEYS)
+            message = f"key {key!r} is unknown: allowed keys {allowed}"
+            errors.append(FieldError(str(key), row[key], allowed, message))
+
+    name: str = ""
+    raw_name = row.get("name")
+    if _is_blank(raw_name):
+        errors.append(_missing("name", f"a name of 1 to {NAME_MAX_CHARS} characters"))
+    elif not isinstance(raw_name, str):
+        errors.append(not_a_text("name", raw_name, f"1 to {NAME_MAX_CHARS} characters"))
+    else:
+        name = raw_name.strip()
+
+    numbers_read: dict[str, float | None] = {}
+    for key in ("length_mm", "thickness_mm", "tilt_deg"):
+        value = row.get(key)
+        if _is_blank(value):
+            errors.append(_missing(key, f"{_NUMBER_ALLOWED} in {key.rsplit('_', 1)[1]}"))
+            numbers_read[key] = None
+        else:
+            numbers_read[key] = _read_number(key, value, errors)
+    for key in ("barrel_diameter_mm", "barrel_perimeter_mm"):
+        value = row.get(key)
+        numbers_read[key] = None if _is_blank(value) else _read_number(key, value, errors)
+
+    ratios: dict[str, Ratio | None] = {}
+    for key in ("length_ratio", "width_ratio"):
+        value = row.get(key)
+        if _is_blank(value):
+            errors.append(_missing(key, _RATIO_ALLOWED))
+            ratios[key] = None
+        else:
+            ratios[key] = _read_ratio(key, value, errors)
+
+    tilt_mode = TiltMode.FIXED
+    raw_mode = row.get("tilt_mode")
+    if not _is_blank(raw_mode):
+        allowed = " or ".join(repr(mode.value) for mode in TiltMode)
+        try:
+            if not isinstance(raw_mode, str):
+                raise ValueError
+            tilt_mode = TiltMode(raw_mode.strip().lower())
+        except ValueError:
+            message = f"tilt_mode = {format_value(raw_mode)} is unknown: allowed {allowed}"
+            errors.append(FieldError("tilt_mode", raw_mode, allowed, message))
+
+    note = ""
+    raw_note = row.get("note")
+    if not _is_blank(raw_note):
+        if isinstance(raw_note, str):
+            note = raw_note.strip()
+        else:
+            errors.append(not_a_text("note", raw_note, f"at most {NOTE_MAX_CHARS} characters"))
+
+    length_ratio, width_ratio = ratios["length_ratio"], ratios["width_ratio"]
+    length_mm, thickness_mm = numbers_read["length_mm"], numbers_read["thickness_mm"]
+    tilt_deg = numbers_read["tilt_deg"]
+    if errors or None in (length_ratio, width_ratio, length_mm, thickness_mm, tilt_deg):
+        raise RecipeFormatError(errors)
+    assert length_ratio is not None and width_ratio is not None  # narrowed above
+    assert length_mm is not None and thickness_mm is not None and tilt_deg is not None
+    return Recipe(
+        id=None,
+        name=name,
+        length_mm=length_mm,
+        thickness_mm=thickness_mm,
+        length_ratio=length_ratio,
+        width_ratio=width_ratio,
+        tilt_mode=tilt_mode,
+        tilt_deg=tilt_deg,
+        barrel_diameter_mm=numbers_read["barrel_diameter_mm"],
+        barrel_perimeter_mm=numbers_read["barrel_perimeter_mm"],
+        note=note,
+    )
+
+
+def recipe_to_mapping(recipe: Recipe) -> dict[str, object]:
+    """The row format of ``recipe`` (no id: it belongs to one database), keys in ROW_KEYS order."""
+    return {
+        "name": recipe.name,
+        "length_mm": recipe.length_mm,
+        "thickness_mm": recipe.thickness_mm,
+        "length_ratio": str(recipe.length_ratio),
+        "width_ratio": str(recipe.width_ratio),
+        "tilt_mode": recipe.tilt_mode.value,
+        "tilt_deg": recipe.tilt_deg,
+        "barrel_diameter_mm": recipe.barrel_diameter_mm,
+        "barrel_perimeter_mm": recipe.barrel_perimeter_mm,
+        "note": recipe.note,
+    }

@@ -1,0 +1,195 @@
+"""Value types for what the machine reports: finished pieces, alarm transitions, parameter changes.
+
+They are plain frozen dataclasses so the machine layer can build them without touching the
+database, and so a record read back compares equal to the one written. Times are timezone-aware;
+a naive datetime is taken as the machine's local time (Python's own convention) and everything is
+stored in UTC, so a change of daylight-saving time never reorders the history.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from datetime import UTC, datetime
+from enum import Enum
+
+
+class PieceResult(Enum):
+    """How one board ended."""
+
+    OK = "ok"  # both sides cut, counted as a finished stave
+    REJECTED = "rejected"  # refused before cutting (width out of limits, not measurable, ...)
+    ABORTED = "aborted"  # cutting started and was stopped (stop, emergency stop, fault)
+
+
+class AlarmState(Enum):
+    """ISA-18.2 alarm states; every transition between two of them is one history row."""
+
+    NORMAL = "normal"
+    ACTIVE_UNACKED = "active_unacked"
+    ACTIVE_ACKED = "active_acked"
+    RETURNED_UNACKED = "returned_unacked"
+    SHELVED = "shelved"
+
+
+def to_utc(moment: datetime) -> datetime:
+    """Return ``moment`` in UTC; a naive datetime is local time."""
+    return moment.astimezone(UTC)
+
+
+def format_utc(moment: datetime) -> str:
+    """The stored form: fixed-width ISO 8601 in UTC, so text order is time order."""
+    return to_utc(moment).strftime("%Y-%m-%dT%H:%M:%S.%fZ")
+
+
+def parse_utc(text: str) -> datetime:
+    """Inverse of :func:`format_utc`."""
+    return datetime.strptime(text, "%Y-%m-%dT%H:%M:%S.%fZ").replace(tzinfo=UTC)
+
+
+def _finite_or_none(field: str, value: float | None) -> str | None:
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        return f"{field}: {value!r} is not allowed; expected a finite number or None"
+    return None
+
+
+@dataclass(frozen=True)
+class ProductionRecord:
+    """One board through the machine.
+
+    ``recipe_name`` is kept beside ``recipe_id`` because a recipe may later be renamed or
+    deleted, and the production record must still say what was made. ``d_mm`` and ``r_mm`` are
+    the solved rise and arc radius (None when nothing was computed, or when the arc is straight,
+    as with a width ratio of 1). ``width_mm`` is None when the gauge gave no finite number.
+    """
+
+    time: datetime
+    recipe_id: int | None
+    recipe_name: str
+    width_mm: float | None
+    d_mm: float | None
+    r_mm: float | None
+    cycle_time_s: float
+    result: PieceResult
+    alarm_code: str | None = None
+    tilt_deg: float | None = None
+    id: int | None = None
+
+    def problems(self) -> list[str]:
+        """Everything that makes this record unstorable, as messages naming the field."""
+        found: list[str] = []
+        if not isinstance(self.time, datetime):
+            found.append(f"time: {self.time!r} is not allowed; expected a datetime")
+        if not isinstance(self.recipe_name, str) or not self.recipe_name.strip():
+            found.append(f"recipe_name: {self.recipe_name!r} is not allowed; expected a name")
+        for field, value in (
+            ("width_mm", self.width_mm),
+            ("d_mm", self.d_mm),
+            ("r_mm", self.r_mm),
+            ("tilt_deg", self.tilt_deg),
+        ):
+            message = _finite_or_none(field, value)
+            if message:
+                found.append(message)
+        if (
+            isinstance(self.cycle_time_s, bool)
+            or not isinstance(self.cycle_time_s, int | float)
+            or not math.isfinite(self.cycle_time_s)
+            or self.cycle_time_s < 0
+        ):
+            found.append(
+                f"cycle_time_s: {self.cycle_time_s!r} is not allowed; expected a finite number >= 0"
+            )
+        if not isinstance(self.result, PieceResult):
+            allowed = ", ".join(r.value for r in PieceResult)
+            found.append(f"result: {self.result!r} is not allowed; allowed: {allowed}")
+        elif self.result is PieceResult.OK and self.width_mm is None:
+            found.append("width_mm: None is not allowed for a finished piece (result ok)")
+        if self.alarm_code is not None and (
+            not isinstance(self.alarm_code, str) or not self.alarm_code.strip()
+        ):
+            found.append(f"alarm_code: {self.alarm_code!r} is not allowed; expected a code or None")
+        return found
+
+
+@dataclass(frozen=True)
+class AlarmEvent:
+    """One transition of one alarm (ISA-18.2 history row).
+
+    ``source`` says where it came from: an axis ("X", "Y", "Z") or a subsystem ("gauge",
+    "estop", "spindle", ...). ``user_name`` is who acknowledged or shelved, when a person did.
+    """
+
+    time: datetime
+    code: str
+    text: str
+    source: str
+    from_state: AlarmState
+    to_state: AlarmState
+    user_name: str | None = None
+    id: int | None = None
+
+    def problems(self) -> list[str]:
+        """Everything that makes this event unstorable, as messages naming the field."""
+        found: list[str] = []
+        if not isinstance(self.time, datetime):
+            found.append(f"time: {self.time!r} is not allowed; expected a datetime")
+        for field, value in (("code", self.code), ("text", self.text), ("source", self.source)):
+            if not isinstance(value, str) or not value.strip():
+                found.append(f"{field}: {value!r} is not allowed; expected non-empty text")
+        allowed = ", ".join(s.value for s in AlarmState)
+        for field, state in (("from_state", self.from_state), ("to_state", self.to_state)):
+            if not isinstance(state, AlarmState):
+                found.append(f"{field}: {state!r} is not allowed; allowed: {allowed}")
+        if self.from_state == self.to_state:
+            found.append(
+                f"to_state: {self.to_state!r} is not allowed; a transition must change the state"
+            )
+        return found
+
+
+@dataclass(frozen=True)
+class AlarmEventFilter:
+    """What :meth:`Database.list_alarm_events` returns: all given conditions must hold.
+
+    ``start`` is inclusive and ``end`` exclusive; the newest events come first, at most ``limit``.
+    """
+
+    start: datetime | None = None
+    end: datetime | None = None
+    code: str | None = None
+    source: str | None = None
+    limit: int = 1000
+
+
+@dataclass(frozen=True)
+class ParameterChange:
+    """One logged change of a system parameter: who, when, from what to what."""
+
+    id: int
+    time: datetime
+    name: str
+    old_value: float | None
+    new_value: float
+    user_name: str
+    user_role: str
+
+
+@dataclass(frozen=True)
+class RecipeChange:
+    """One logged change of a recipe, with the full recipe before and after as JSON text.
+
+    Deleting a recipe is allowed, losing it is not: the last version of a deleted recipe stays
+    here and can be imported back.
+    """
+
+    id: int
+    time: datetime
+    recipe_id: int | None
+    recipe_name: str
+    action: str  # "create", "update", "delete"
+    user_name: str
+    before_json: str | None
+    after_json: str | None
