@@ -1,0 +1,50 @@
+"""The ``stave`` command-line tools: one subcommand per job, each in the module that owns it.
+
+Why a table of module names: each tool lives beside the code it exercises (``stave solve`` in
+the geometry package, ``stave probe`` in the drivers, ...) and is imported only when run, so
+``stave solve`` on an office PC never loads Qt or a fieldbus stack.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from app import __version__
+
+# subcommand -> (module with add_arguments(parser) and run(args) -> int, one-line help)
+SUBCOMMANDS: dict[str, tuple[str, str]] = {
+    "solve": ("app.geometry.cli_solve", "compute a stave's profile and tool path"),
+    "simulate": ("app.machine.cli_simulate", "run automatic cycles on the simulated machine"),
+    "probe": ("app.drivers.cli_probe", "connect to the configured hardware and show its state"),
+    "db": ("app.data.cli_db", "recipes import/export, production export, backup and restore"),
+}
+
+
+def _module(module_name: str):  # type: ignore[no-untyped-def]
+    return importlib.import_module(module_name)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args_list = list(sys.argv[1:] if argv is None else argv)
+    parser = argparse.ArgumentParser(prog="stave", description=__doc__.splitlines()[0])
+    parser.add_argument("--version", action="version", version=f"stave {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    chosen = args_list[0] if args_list else ""
+    for name, (module_name, help_text) in SUBCOMMANDS.items():
+        sub_parser = sub.add_parser(name, help=help_text, description=help_text)
+        sub_parser.set_defaults(_module=module_name)
+        if name == chosen:  # only the chosen tool's module is imported
+            _module(module_name).add_arguments(sub_parser)
+    args = parser.parse_args(args_list)
+    if args.command is None:
+        parser.print_help()
+        return 2
+    code: int = _module(args._module).run(args)
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

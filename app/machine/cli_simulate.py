@@ -1,0 +1,342 @@
+"""``stave simulate``: complete automatic cycles on the simulated machine, faster than real time.
+
+What it is for: preparing and checking recipes in the office, and proving the machine's
+behaviour under faults. It drives the real machine layer (state machine, cycle, planner,
+executor) on the simulation backend, exactly as the operator would: home, select the recipe,
+put a board in, press Start, wait for the cycle to end; with ``--inject`` a fault is injected
+when the cycle reaches a step, and the run watches that nothing moves again by itself.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import sys
+import tempfile
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, TextIO
+
+from app.config import ConfigError, MachineConfig, load_config
+from app.data.recipe import Recipe
+from app.drivers.contracts import FAULT_KINDS, FaultInjector
+from app.machine import commands as cmd
+from app.machine.controller import MachineController
+from app.machine.process_params import motion_limits
+from app.machine.runtime import MachineRuntime
+from app.machine.states import LATCHED_STATES, CycleStep, MachineState
+
+STEP_NAMES = {step.name.lower(): step for step in CycleStep}
+SETTLE_AFTER_ALARM_S = 3.0  # how long the run watches for motion after an alarm
+HOMING_TIMEOUT_S = 300.0
+CYCLE_TIMEOUT_S = 600.0
+
+
+class UsageError(Exception):
+    """Bad command-line input: one line, exit code 2."""
+
+
+@dataclass(frozen=True)
+class Injection:
+    kind: str
+    target: str
+    step: CycleStep
+
+    @classmethod
+    def parse(cls, text: str) -> Injection:
+        what, _, step_name = text.partition("@")
+        kind, _, target = what.partition(":")
+        if kind not in FAULT_KINDS:
+            raise UsageError(f"--inject {text!r}: kind {kind!r} is not allowed: one of "
+                             + ", ".join(FAULT_KINDS))
+        if target and target not in ("X", "Y", "Z"):
+            raise UsageError(f"--inject {text!r}: axis {target!r} is not allowed: X, Y or Z")
+        if step_name not in STEP_NAMES:
+            raise UsageError(f"--inject {text!r}: step {step_name!r} is not allowed: one of "
+                             + ", ".join(STEP_NAMES))
+        return cls(kind, target, STEP_NAMES[step_name])
+
+
+@dataclass
+class Watch:
+    """Per-period observation: contour error while cutting, and motion after an alarm."""
+
+    max_contour_error_mm: float = 0.0
+    latched_at_s: float | None = None
+    still_positions: tuple[float, float, float] | None = None
+    restarted: bool = False
+    trace: Any = None
+    operator_acted: bool = False
+    _settled_periods: int = 0
+
+    def observe(self, runtime: MachineRuntime) -> None:
+        c = runtime.controller
+        if c.cycle is not None and c.cycle.executor is not None and c.cycle.planned is not None:
+            last = c.cycle.last_output
+            if last is not None and last.cutting:
+                x, y, _z = c.axes.positions()
+                error = c.cycle.planned.toolpath.distance_to_path(x, y)
+                self.max_contour_error_mm = max(self.max_contour_error_mm, error)
+        if c.state in LATCHED_STATES and not self.operator_acted:
+            self._watch_latched(c)
+        if self.trace is not None:
+            cmd_pos = c.axes.command
+            x, y, z = c.axes.positions()
+            self.trace.writerow([f"{runtime.time_s:.4f}", c.state.value,
+                                 f"{cmd_pos['X']:.4f}", f"{cmd_pos['Y']:.4f}",
+                                 f"{cmd_pos['Z']:.4f}", f"{x:.4f}", f"{y:.4f}", f"{z:.4f}"])
+
+    def _watch_latched(self, c: MachineController) -> None:
+        positions = c.axes.positions()
+        if self.latched_at_s is None:
+            self.latched_at_s = c.now_s
+        if self.still_positions is None:
+            # The axes stop on their ramps first; once still for 50 periods, any later motion
+            # before an operator acts is a restart.
+            if c.axes.standing_still(tolerance=1e-3):
+                self._settled_periods += 1
+                if self._settled_periods >= 50:
+                    self.still_positions = positions
+            else:
+                self._settled_periods = 0
+            return
+        if max(abs(a - b) for a, b in zip(positions, self.still_positions, strict=True)) > 0.01:
+            self.restarted = True
+
+
+@dataclass
+class CycleReport:
+    width_mm: float
+    result: str = "ok"
+    alarms: list[str] = field(default_factory=list)
+    D_mm: float | None = None
+    R_mm: float | None = None
+    cycle_time_s: float | None = None
+    cut_time_s: dict[str, float] = field(default_factory=dict)
+    cut_length_mm: dict[str, float] = field(default_factory=dict)
+    max_contour_error_mm: float = 0.0
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument("--recipe", metavar="NAME", help="recipe name in the database")
+    source.add_argument("--recipe-file", type=Path, metavar="FILE",
+                        help="JSON recipe file (one recipe object or a list; the first is used)")
+    parser.add_argument("--width", type=float, required=True, metavar="MM",
+                        help="width of every board put in")
+    parser.add_argument("--cycles", type=int, default=1, metavar="N")
+    parser.add_argument("--inject", metavar="KIND[:AXIS]@STEP",
+                        help="inject a fault when the cycle reaches STEP ("
+                        + ", ".join(STEP_NAMES) + ")")
+    parser.add_argument("--trace", type=Path, metavar="FILE.csv",
+                        help="write commanded and actual positions at every period")
+    parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    parser.add_argument("--realtime", action="store_true", help="run at real-time speed")
+    parser.add_argument("--config", type=Path, help="machine configuration (TOML)")
+    parser.add_argument("--db", type=Path, help="database with the recipes (default: a new one)")
+
+
+def _recipe_from_args(args: argparse.Namespace, controller: MachineController) -> Recipe:
+    if args.recipe_file is not None:
+        from app.data.errors import DataError
+        from app.data.recipe_files import load_recipe_file
+
+        try:
+            recipes = load_recipe_file(args.recipe_file)
+        except (DataError, ValueError) as exc:
+            raise UsageError(f"--recipe-file: {exc}") from exc
+        if not recipes:
+            raise UsageError(f"--recipe-file {args.recipe_file}: no recipe in the file")
+        try:
+            return controller.store.save_recipe(recipes[0])
+        except ValueError as exc:
+            raise UsageError(f"--recipe-file: {exc}") from exc
+    recipe = controller.store.recipe_by_name(args.recipe)
+    if recipe is None:
+        names = ", ".join(r.name for r in controller.store.recipes())
+        raise UsageError(f"--recipe {args.recipe!r} is not in the database; it has: {names}")
+    return recipe
+
+
+def _sim_world(runtime: MachineRuntime) -> Any:
+    world = runtime.backend.extras.get("world")
+    if world is None:
+        raise UsageError("stave simulate needs the simulation backend (backend.name = 'sim')")
+    return world
+
+
+def _home(runtime: MachineRuntime) -> None:
+    c = runtime.controller
+    if c.state is MachineState.READY:
+        return
+    c.post(cmd.Home())
+    if not runtime.run_until(lambda m: m.state is not MachineState.HOMING
+                             and m.state is not MachineState.NOT_HOMED, HOMING_TIMEOUT_S):
+        raise RuntimeError("homing did not finish")
+    if c.state is not MachineState.READY:
+        raise RuntimeError(f"homing ended in {c.state.value}: {c.state_text()}")
+
+
+@contextmanager
+def _tick_pacing(runtime: MachineRuntime, realtime: bool) -> Iterator[None]:
+    if not realtime:
+        yield
+        return
+    start_wall = time.monotonic()
+
+    def pace(rt: MachineRuntime) -> None:
+        ahead = rt.time_s - (time.monotonic() - start_wall)
+        if ahead > 0:
+            time.sleep(ahead)
+
+    runtime.on_tick.append(pace)
+    try:
+        yield
+    finally:
+        runtime.on_tick.remove(pace)
+
+
+def _run_cycle(runtime: MachineRuntime, width_mm: float, injection: Injection | None,
+               watch: Watch) -> CycleReport:
+    c = runtime.controller
+    world = _sim_world(runtime)
+    report = CycleReport(width_mm)
+    world.remove_board()
+    world.load_board(width_mm)
+    runtime.run_for(0.1)
+    alarms_before = {a.alarm_id for a in c.alarms.views()}
+    c.post(cmd.Start())
+    injected = False
+
+    def finished(m: MachineController) -> bool:
+        nonlocal injected
+        if injection is not None and not injected and m.cycle is not None \
+                and m.cycle.step is injection.step:
+            faults = runtime.backend.extras.get("faults")
+            if isinstance(faults, FaultInjector):
+                faults.inject(injection.kind, injection.target)
+            injected = True
+        return m.state in LATCHED_STATES or (m.state is MachineState.READY and m.cycle is None
+                                             and runtime.periods > 2)
+
+    runtime.run_for(2 * runtime.period_s)
+    if not runtime.run_until(finished, CYCLE_TIMEOUT_S):
+        raise RuntimeError(f"cycle did not end within {CYCLE_TIMEOUT_S:.0f} s")
+    if c.state in LATCHED_STATES:
+        runtime.run_for(SETTLE_AFTER_ALARM_S)
+        report.result = "alarm"
+    report.alarms = sorted({a.code for a in c.alarms.views() if a.alarm_id not in alarms_before})
+    if c.finished_cycles:
+        piece, cycle = c.finished_cycles[-1]
+        o = cycle.outcome
+        report.D_mm, report.R_mm = o.d_mm, o.r_mm
+        report.cycle_time_s = piece.cycle_time_s
+        if report.result == "ok":
+            report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
+            report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
+    report.max_contour_error_mm = watch.max_contour_error_mm
+    watch.max_contour_error_mm = 0.0
+    return report
+
+
+def simulate(args: argparse.Namespace, config: MachineConfig, db_path: Path,
+             out: TextIO) -> dict[str, Any]:
+    injection = Injection.parse(args.inject) if args.inject else None
+    if not math.isfinite(args.width):
+        raise UsageError(f"--width {args.width} is not allowed: a finite number of mm")
+    if args.cycles < 1:
+        raise UsageError(f"--cycles {args.cycles} is not allowed: 1 or more")
+    runtime = MachineRuntime.create(config.with_backend("sim", "sim"), db_path)
+    watch = Watch()
+    trace_file = args.trace.open("w", newline="", encoding="utf-8") if args.trace else None
+    try:
+        if trace_file is not None:
+            watch.trace = csv.writer(trace_file)
+            watch.trace.writerow(["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act",
+                                  "z_act"])
+        runtime.on_tick.append(watch.observe)
+        runtime.start()
+        recipe = _recipe_from_args(args, runtime.controller)
+        assert recipe.id is not None
+        runtime.controller.post(cmd.SelectRecipe(recipe.id))
+        with _tick_pacing(runtime, args.realtime):
+            _home(runtime)
+            reports = []
+            for _ in range(args.cycles):
+                report = _run_cycle(runtime, args.width, injection, watch)
+                reports.append(report)
+                if not args.json:
+                    print(_describe(report), file=out)
+                if report.result != "ok":
+                    break
+        c = runtime.controller
+        params = c.params
+        limits = motion_limits(c.config, params)
+        tilt = (c.finished_cycles[-1][1].outcome.tilt_deg if c.finished_cycles
+                else recipe.tilt_deg)
+        result = {
+            "pieces": c.pieces_total,
+            "final_state": c.state.value,
+            "restarted": watch.restarted,
+            "params": {
+                "P0": [params["start_x_mm"], params["start_y_mm"]],
+                "tool_radius_mm": params["tool_radius_mm"],
+                "machine_height_mm": params["machine_height_mm"],
+                "tilt_deg": tilt,
+                "length_mm": recipe.length_mm,
+                "length_ratio": recipe.length_ratio.value,
+                "width_ratio": recipe.width_ratio.value,
+                "feed_mm_s": params["xy_speed_mm_s"],
+                "accel_mm_s2": min(limits.x.acceleration, limits.y.acceleration),
+            },
+            "cycles": [_cycle_json(r) for r in reports],
+        }
+        return result
+    finally:
+        runtime.shutdown()
+        if trace_file is not None:
+            trace_file.close()
+
+
+def _cycle_json(r: CycleReport) -> dict[str, Any]:
+    return {
+        "width_mm": r.width_mm,
+        "D_mm": r.D_mm,
+        "R_mm": r.R_mm,
+        "cycle_time_s": r.cycle_time_s,
+        "cut_time_s": r.cut_time_s,
+        "cut_length_mm": r.cut_length_mm,
+        "max_contour_error_mm": r.max_contour_error_mm,
+        "result": r.result,
+        "alarms": r.alarms,
+    }
+
+
+def _describe(r: CycleReport) -> str:
+    if r.result != "ok":
+        return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms) or '(none)'}"
+    return (f"width {r.width_mm:.2f} mm: D {r.D_mm:.4f} mm, R {r.R_mm:.2f} mm, "
+            f"cycle {r.cycle_time_s:.2f} s (cut A {r.cut_time_s['A']:.2f} s, "
+            f"B {r.cut_time_s['B']:.2f} s), max contour error {r.max_contour_error_mm:.4f} mm")
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        config = load_config(args.config)
+        with tempfile.TemporaryDirectory() as tmp:
+            db_path = args.db if args.db is not None else Path(tmp) / "simulate.db"
+            result = simulate(args, config, db_path, sys.stdout)
+    except (ConfigError, UsageError) as exc:
+        print(f"stave simulate: {exc}", file=sys.stderr)
+        return 2
+    if args.json:
+        print(json.dumps(result, indent=2))
+    else:
+        print(f"pieces {result['pieces']}, final state {result['final_state']}, "
+              f"restarted {str(result['restarted']).lower()}")
+    return 0

@@ -1,0 +1,158 @@
+"""Commands the screens (or a test, or a command-line tool) post to the machine.
+
+Why plain frozen dataclasses: they cross a process boundary (pickled through a queue) and a
+command must never carry behaviour the GUI could run. The machine decides whether to accept
+one; a refused command raises an event with the reason, visible in the next snapshot.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Start:
+    """Start the automatic cycle (screen button or push button)."""
+
+
+@dataclass(frozen=True)
+class Stop:
+    """Controlled stop (IEC 60204-1 category 2): decelerate along the path and hold."""
+
+
+@dataclass(frozen=True)
+class Reset:
+    """Operator's reset after an error or E-stop: fault-resets the drives (they end disabled)
+    and unlatches the state if the cause is gone. Never restarts anything by itself."""
+
+
+@dataclass(frozen=True)
+class Home:
+    """Home one axis ("X", "Y" or "Z"; manual mode) or all axes (axis = "")."""
+
+    axis: str = ""
+
+
+@dataclass(frozen=True)
+class SelectRecipe:
+    recipe_id: int
+
+
+@dataclass(frozen=True)
+class EnterManual:
+    pass
+
+
+@dataclass(frozen=True)
+class LeaveManual:
+    pass
+
+
+@dataclass(frozen=True)
+class JogContinuous:
+    """Jog while held. The screen repeats it at least every ``JOG_REFRESH_S`` while the
+    button is held; the machine stops the axis when the refresh stops (dead-man), so a
+    lost release event or a frozen screen cannot leave an axis running."""
+
+    axis: str
+    direction: int  # -1 or +1
+
+
+@dataclass(frozen=True)
+class JogStep:
+    """Move one axis by a fixed step (mm for X/Y, degrees for Z)."""
+
+    axis: str
+    step: float
+
+
+@dataclass(frozen=True)
+class JogRelease:
+    """The jog button was released: decelerate to standstill now."""
+
+    axis: str = ""
+
+
+@dataclass(frozen=True)
+class SetJogSpeed:
+    """Jog speed and acceleration of manual mode, for X-Y (group "XY") or Z (group "Z");
+    they do not change the automatic ones."""
+
+    group: str
+    velocity: float
+    acceleration: float
+
+
+@dataclass(frozen=True)
+class SetClamps:
+    closed: bool
+
+
+@dataclass(frozen=True)
+class SetSpindle:
+    on: bool
+
+
+@dataclass(frozen=True)
+class SetFeedOverride:
+    percent: float  # 0 to 120
+
+
+@dataclass(frozen=True)
+class Acknowledge:
+    """Acknowledge one alarm (by its id) or every alarm (alarm_id = 0)."""
+
+    alarm_id: int = 0
+
+
+@dataclass(frozen=True)
+class ReloadParameters:
+    """The System screen saved parameters: reload them from the database."""
+
+
+@dataclass(frozen=True)
+class ResetShiftCounter:
+    pass
+
+
+@dataclass(frozen=True)
+class InjectFault:
+    """Technician's simulation menu: inject a fault (simulation backend only)."""
+
+    kind: str
+    target: str = ""
+
+
+@dataclass(frozen=True)
+class ClearFaults:
+    """Technician's simulation menu: clear injected faults (the machine stays latched)."""
+
+
+@dataclass(frozen=True)
+class LoadBoard:
+    """Simulation only: put a board of ``width_mm`` (or a random one) on the table."""
+
+    width_mm: float | None = None
+
+
+@dataclass(frozen=True)
+class SetUser:
+    """The logged-in user changed (for the audit trail of alarms and records)."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class Shutdown:
+    """Stop everything safely and end the machine process."""
+
+
+Command = (
+    Start | Stop | Reset | Home | SelectRecipe | EnterManual | LeaveManual | JogContinuous
+    | JogStep | JogRelease | SetJogSpeed | SetClamps | SetSpindle | SetFeedOverride
+    | Acknowledge | ReloadParameters | ResetShiftCounter | InjectFault | ClearFaults
+    | LoadBoard | SetUser | Shutdown
+)
+
+JOG_REFRESH_S = 0.1  # the screen repeats JogContinuous at least this often
+JOG_DEADMAN_S = 0.3  # no refresh for this long: the machine stops the jog

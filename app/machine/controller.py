@@ -1,0 +1,629 @@
+"""The machine controller: one period of the machine, from inputs to outputs.
+
+What the original PLC's Main, Input, Output, Step and Manual routines did, in one place that
+runs every period (4 ms) in the machine process:
+
+1. read every device (a device that does not answer is alarm E020, latched);
+2. supervise: E-stop chain, guard, drive faults, following error, homing (faults latch the
+   state and stop at once; nothing restarts without an operator's Reset and then a Start);
+3. carry out the operator's commands that the current state accepts (the rules are in
+   :mod:`app.machine.permissions`, the states in :mod:`app.machine.states`);
+4. run the current activity: the automatic cycle, homing, manual jog, or nothing;
+5. write the setpoints and the outputs.
+
+The controller never sleeps and never reads a clock: the runtime hands it ``now_s`` each
+period, so the same code runs in real time on the panel and on a simulated clock in tests.
+"""
+
+from __future__ import annotations
+
+import collections
+import logging
+import time
+from collections.abc import Callable
+from dataclasses import replace
+
+from app.config import MachineConfig
+from app.data.recipe import Recipe
+from app.drivers.contracts import (
+    DeviceEvent,
+    DeviceEventKind,
+    DriverError,
+    FaultInjector,
+    InputImage,
+    MachineBackend,
+    OutputImage,
+    WidthGauge,
+)
+from app.machine import commands as cmd
+from app.machine.alarms import AlarmManager
+from app.machine.axes import AxisGroup
+from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
+from app.machine.cycle_plan import PlannedStave, plan_board
+from app.machine.executor import check_feedback
+from app.machine.homing import HomingFailed, HomingSequence
+from app.machine.manual import ManualControl
+from app.machine.permissions import Facts, allowed_commands
+from app.machine.preview import build_preview
+from app.machine.process_params import motion_limits, stave_limits
+from app.machine.snapshot import AxisView, CycleView, MachineSnapshot, PlanPreview
+from app.machine.states import (
+    LATCHED_STATES,
+    Event,
+    MachineState,
+    Mode,
+    TransitionRefused,
+    next_state,
+)
+from app.machine.store import MachineStore, PieceRecord
+
+log = logging.getLogger(__name__)
+
+STOP_LOCKOUT_S = 0.5  # a second Stop within this time is ignored (spec section 6)
+RESET_TIMEOUT_S = 1.0  # how long a Reset waits for the drives to leave FAULT
+FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
+EMERGENCY_TEXTS = {
+    0x8611: "following error",
+    0x7300: "sensor",
+    0x8130: "heartbeat / life guard",
+    0x2310: "over-current",
+    0x3210: "DC link over-voltage",
+    0x4310: "drive over-temperature",
+    0xFF01: "limit switch",
+}
+
+
+class MachineController:
+    def __init__(
+        self,
+        config: MachineConfig,
+        backend: MachineBackend,
+        gauge: WidthGauge,
+        store: MachineStore,
+        *,
+        submit: PlanSubmitter = run_now,
+        wall_clock: Callable[[], float] = time.time,
+    ) -> None:
+        self.config = config
+        self.backend = backend
+        self.gauge = gauge
+        self.store = store
+        self._submit = submit
+        self._wall_clock = wall_clock
+        self.alarms = AlarmManager(on_transition=store.record_alarm, wall_clock=wall_clock)
+        self.axes = AxisGroup(config.axes, backend.motion)
+        self.manual = ManualControl(config.axes)
+        self.state = MachineState.POWER_UP
+        self.mode = Mode.AUTOMATIC
+        self.now_s = 0.0
+        self.inputs = InputImage()
+        self.outputs = OutputImage()
+        self.params: dict[str, float] = store.parameters()
+        self.recipe: Recipe | None = None
+        self.cycle: AutomaticCycle | None = None
+        self.homing: HomingSequence | None = None
+        self.feed_override_pct = 100.0
+        self.message = ""
+        self.user = ""
+        self.last_width_mm: float | None = None
+        self.last_cycle_time_s: float | None = None
+        self.shift_start = wall_clock()
+        self.pieces_shift, self.pieces_total = store.piece_counts(self.shift_start)
+        self._commands: collections.deque[cmd.Command] = collections.deque()
+        self._previous_inputs = InputImage()
+        self._last_stop_s = -1e9
+        self._reset_pending_since: float | None = None
+        self._comms_ok = True
+        self._plans: dict[int, PlanPreview] = {}
+        self._plan_id = 0
+        self._seq = 0
+        self._moved_since_latch = False
+        self._last_piece: PieceRecord | None = None
+        self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
+        recipe_id = store.first_recipe_id()
+        if recipe_id is not None:
+            self.recipe = store.recipe(recipe_id)
+
+    # ---------------------------------------------------------------- lifecycle
+    def power_up(self) -> None:
+        """Configure and activate every device; the state follows from the encoders."""
+        try:
+            for device in (*self.backend.devices(), self.gauge):
+                device.configure()
+            for device in (*self.backend.devices(), self.gauge):
+                device.activate()
+            self.axes.update(self.backend.motion.read_axes())
+            self.inputs = self.backend.io.read_inputs()
+        except DriverError as exc:
+            log.error("power-up failed: %s", exc)
+            self._comms_ok = False
+            self.alarms.raise_alarm("E020", exc.device, str(exc))
+            self.state = MachineState.ERROR
+            return
+        event = Event.STARTED_HOMED if self.axes.all_homed() else Event.STARTED_UNHOMED
+        self._transition(event)
+
+    def shutdown(self) -> None:
+        """Stop everything and release the devices (spindle off, drives disabled)."""
+        try:
+            if self._comms_ok:
+                self._stop_now()
+                self.outputs = OutputImage(clamps_close=self.outputs.clamps_close)
+                self.backend.io.write_outputs(self.outputs)
+                self.axes.disable_all()
+        except DriverError as exc:
+            log.warning("shutdown: %s", exc)
+        for device in (self.gauge, *self.backend.devices()):
+            try:
+                device.deactivate()
+            except DriverError as exc:
+                log.warning("deactivate %s: %s", type(device).__name__, exc)
+            device.shutdown()
+        self.store.close()
+
+    # ---------------------------------------------------------------- commands
+    def post(self, command: cmd.Command) -> None:
+        self._commands.append(command)
+
+    def facts(self) -> Facts:
+        return Facts(self.state, self.axes.all_homed(), self.recipe is not None, self.inputs,
+                     self.cycle is not None, "faults" in self.backend.extras)
+
+    def _refuse(self, reason: str) -> None:
+        self.message = reason
+        log.info("refused: %s", reason)
+
+    def _handle(self, command: cmd.Command) -> None:
+        name = type(command).__name__
+        reason = allowed_commands(self.facts()).get(name, "unknown command")
+        if reason:
+            if not (isinstance(command, cmd.Stop) and reason == "nothing is moving"):
+                self._refuse(reason)
+            return
+        handler = getattr(self, f"_on_{name}", None)
+        if handler is not None:
+            handler(command)
+
+    def _on_Start(self, _c: cmd.Start) -> None:
+        assert self.recipe is not None
+        self.params = self.store.parameters()
+        recipe = self.recipe
+        limits_stave = stave_limits(self.config)
+        limits_motion = motion_limits(self.config, self.params)
+        params = dict(self.params)
+
+        def plan_job(width_mm: float, start: tuple[float, float, float]) -> PlannedStave:
+            return plan_board(recipe, width_mm, params, limits_stave, limits_motion, start)
+
+        self.cycle = AutomaticCycle(recipe=recipe, config=self.config, gauge=self.gauge,
+                                    plan_job=plan_job, submit=self._submit,
+                                    started_s=self.now_s,
+                                    feed_override_pct=self.feed_override_pct)
+        self.message = ""
+        self._transition(Event.START)
+
+    def _on_Stop(self, _c: cmd.Stop) -> None:
+        if self.now_s - self._last_stop_s < STOP_LOCKOUT_S:
+            log.info("second Stop within %.1f s ignored", STOP_LOCKOUT_S)
+            return
+        self._last_stop_s = self.now_s
+        if self.state is MachineState.MANUAL:
+            self.manual.release_all()
+            return
+        if self.state is MachineState.STOPPING:
+            return
+        if self.cycle is not None:
+            self.cycle.request_stop()
+        if self.homing is not None:
+            self.homing = None
+            self.axes.quick_stop_all()
+        self._transition(Event.STOP)
+
+    def _on_Reset(self, _c: cmd.Reset) -> None:
+        self.axes.fault_reset_all()
+        if not self._comms_ok:
+            self._reconnect()
+        self._reset_pending_since = self.now_s
+
+    def _on_Home(self, c: cmd.Home) -> None:
+        self.homing = HomingSequence.for_axes(c.axis, self.config.axes, self.now_s)
+        if self.state is not MachineState.MANUAL:
+            self._transition(Event.HOME)
+
+    def _on_SelectRecipe(self, c: cmd.SelectRecipe) -> None:
+        recipe = self.store.recipe(c.recipe_id)
+        if recipe is None:
+            self._refuse(f"recipe {c.recipe_id} does not exist")
+            return
+        self.recipe = recipe
+
+    def _on_EnterManual(self, _c: cmd.EnterManual) -> None:
+        self.mode = Mode.MANUAL
+        self.manual.sync(self.axes)
+        self._transition(Event.ENTER_MANUAL)
+
+    def _on_LeaveManual(self, _c: cmd.LeaveManual) -> None:
+        self.manual.release_all()
+        self.homing = None
+        self.mode = Mode.AUTOMATIC
+        self.outputs = replace(self.outputs, spindle_on=False)
+        self._transition(Event.LEAVE_MANUAL)
+
+    def _on_JogContinuous(self, c: cmd.JogContinuous) -> None:
+        if reason := self.manual.press(c.axis, c.direction, self.now_s, self.axes):
+            self._refuse(reason)
+
+    def _on_JogStep(self, c: cmd.JogStep) -> None:
+        if reason := self.manual.step(c.axis, c.step, self.axes):
+            self._refuse(reason)
+
+    def _on_JogRelease(self, c: cmd.JogRelease) -> None:
+        self.manual.release(c.axis)
+
+    def _on_SetJogSpeed(self, c: cmd.SetJogSpeed) -> None:
+        if reason := self.manual.set_speed(c.group, c.velocity, c.acceleration):
+            self._refuse(reason)
+
+    def _on_SetClamps(self, c: cmd.SetClamps) -> None:
+        self.outputs = replace(self.outputs, clamps_close=c.closed)
+
+    def _on_SetSpindle(self, c: cmd.SetSpindle) -> None:
+        self.outputs = replace(self.outputs, spindle_on=c.on)
+
+    def _on_SetFeedOverride(self, c: cmd.SetFeedOverride) -> None:
+        if not 0.0 <= c.percent <= 120.0:
+            self._refuse(f"feed override {c.percent:g} % is not allowed: 0 to 120 %")
+            return
+        self.feed_override_pct = c.percent
+        if self.cycle is not None:
+            self.cycle.set_override(c.percent)
+
+    def _on_Acknowledge(self, c: cmd.Acknowledge) -> None:
+        self.alarms.acknowledge(c.alarm_id, self.user)
+
+    def _on_ReloadParameters(self, _c: cmd.ReloadParameters) -> None:
+        self.params = self.store.parameters()
+        if self.recipe is not None and self.recipe.id is not None:
+            self.recipe = self.store.recipe(self.recipe.id) or self.recipe
+
+    def _on_ResetShiftCounter(self, _c: cmd.ResetShiftCounter) -> None:
+        self.shift_start = self._wall_clock()
+        self.pieces_shift = 0
+
+    def _on_InjectFault(self, c: cmd.InjectFault) -> None:
+        injector = self.backend.extras.get("faults")
+        if isinstance(injector, FaultInjector):
+            injector.inject(c.kind, c.target)
+
+    def _on_ClearFaults(self, _c: cmd.ClearFaults) -> None:
+        injector = self.backend.extras.get("faults")
+        if isinstance(injector, FaultInjector):
+            injector.clear_injections()
+
+    def _on_LoadBoard(self, c: cmd.LoadBoard) -> None:
+        world = self.backend.extras.get("world")
+        load = getattr(world, "load_board", None)
+        if callable(load):
+            load(c.width_mm)
+
+    def _on_SetUser(self, c: cmd.SetUser) -> None:
+        self.user = c.name
+
+    # ---------------------------------------------------------------- transitions
+    def _transition(self, event: Event) -> None:
+        try:
+            new = next_state(self.state, event, self.axes.all_homed())
+        except TransitionRefused as exc:
+            self._refuse(exc.reason)
+            return
+        if new is not self.state:
+            log.info("state %s -> %s (%s)", self.state.value, new.value, event.value)
+        if new in LATCHED_STATES and self.state not in LATCHED_STATES:
+            self._moved_since_latch = False
+        self.state = new
+        if new is not MachineState.MANUAL:
+            self.mode = Mode.AUTOMATIC
+
+    def _fault(self, code: str, source: str, detail: str) -> None:
+        """Raise a fault alarm, stop at once and latch ERROR (IEC 60204-1 stop category 1:
+        the drives quick-stop, then lose power)."""
+        self.alarms.raise_alarm(code, source, detail)
+        if self.state in LATCHED_STATES:
+            return
+        log.warning("fault %s %s: %s", code, source, detail)
+        if self.cycle is not None:
+            self._record_abort(code)
+        self._stop_now()
+        self._transition(Event.FAULT)
+
+    def _stop_now(self) -> None:
+        if self.cycle is not None:
+            self.cycle.abort()
+            self.cycle = None
+        self.homing = None
+        self.manual.release_all(immediate=True)
+        if self.axes.feedback:
+            self.axes.hold_where_they_are()
+            self.axes.quick_stop_all()
+        self.outputs = replace(self.outputs, spindle_on=False, centering_extend=False)
+
+    # ---------------------------------------------------------------- the period
+    def tick(self, now_s: float) -> None:
+        self.now_s = now_s
+        try:
+            self._read()
+        except DriverError as exc:
+            self._comms_lost(exc)
+            self._process_commands()
+            return
+        self._process_buttons()
+        self._supervise()
+        self._process_commands()
+        self._check_reset()
+        try:
+            self._run_activity()
+        except CycleFault as exc:
+            self._fault(exc.code, exc.source, exc.detail)
+        except HomingFailed as exc:
+            self._fault("E015", exc.axis, exc.detail)
+        self._watch_latched_motion()
+        self._lamps()
+        try:
+            self.axes.write()
+            self.backend.io.write_outputs(self.outputs)
+        except DriverError as exc:
+            self._comms_lost(exc)
+
+    def _read(self) -> None:
+        feedback = self.backend.motion.read_axes()
+        self.inputs = self.backend.io.read_inputs()
+        self.axes.update(feedback)
+        for device in (*self.backend.devices(), self.gauge):
+            for event in device.events():
+                self._device_event(event)
+
+    def _device_event(self, event: DeviceEvent) -> None:
+        if event.kind in (DeviceEventKind.COMMUNICATION_LOST, DeviceEventKind.RECEIVE_THREAD_DIED):
+            self._comms_ok = False
+            self._fault("E020", event.device, event.text or event.kind.value)
+        elif event.kind is DeviceEventKind.EMERGENCY and event.code:
+            text = event.text or EMERGENCY_TEXTS.get(event.code, "")
+            log.warning("EMCY %s 0x%04X %s", event.device, event.code, text)
+        elif event.kind is DeviceEventKind.COMMUNICATION_RESTORED:
+            log.info("communication restored: %s (reset needed)", event.device)
+
+    def _comms_lost(self, exc: DriverError) -> None:
+        self._comms_ok = False
+        if self.cycle is not None:
+            self.cycle.abort()
+        self._fault("E020", exc.device, str(exc))
+
+    def _reconnect(self) -> None:
+        """Operator's Reset after a lost link: bring the devices up again (disabled)."""
+        try:
+            for device in (*self.backend.devices(), self.gauge):
+                device.deactivate()
+            for device in (*self.backend.devices(), self.gauge):
+                device.configure()
+                device.activate()
+            self._comms_ok = True
+        except DriverError as exc:
+            self._refuse(f"reconnection failed: {exc}")
+
+    def _process_buttons(self) -> None:
+        before, now = self._previous_inputs, self.inputs
+        self._previous_inputs = now
+        if now.stop_button and not before.stop_button:
+            self._commands.appendleft(cmd.Stop())
+        if now.start_button and not before.start_button:
+            self._commands.append(cmd.Start())
+        if now.reset_button and not before.reset_button:
+            self._commands.append(cmd.Reset())
+
+    def _process_commands(self) -> None:
+        while self._commands:
+            command = self._commands.popleft()
+            if isinstance(command, cmd.Shutdown):
+                continue
+            self._handle(command)
+
+    def _supervise(self) -> None:
+        inputs = self.inputs
+        if not inputs.estop_ok:
+            self.alarms.raise_alarm("E001", "E-stop chain")
+            if self.state is not MachineState.EMERGENCY_STOP:
+                if self.cycle is not None:
+                    self._record_abort("E001")
+                self._stop_now()
+                self.axes.disable_all()
+                self._transition(Event.ESTOP)
+        else:
+            self.alarms.clear("E001", "E-stop chain")
+        moving = self.state in (MachineState.AUTOMATIC, MachineState.HOMING)
+        if not inputs.guard_closed and moving and (self.cycle is None or self.cycle.moving
+                                                   or self.homing is not None):
+            self._fault("E002", "guard", "guard opened")
+        elif inputs.guard_closed:
+            self.alarms.clear("E002", "guard")
+        for name, fb in self.axes.feedback.items():
+            if fb.faulted:
+                code = "E012" if (fb.limit_positive or fb.limit_negative) else (
+                    "E011" if fb.fault_code == FOLLOWING_ERROR_FAULT else "E010")
+                text = EMERGENCY_TEXTS.get(fb.fault_code, "")
+                self._fault(code, name, f"fault code 0x{fb.fault_code:04X} {text}".strip())
+            else:
+                for code in ("E010", "E011", "E012", "E013"):
+                    if self.state not in LATCHED_STATES or code != "E013":
+                        self.alarms.clear(code, name)
+        if self.cycle is not None and self.cycle.moving:
+            setpoint = {n: self.axes.command[n] for n in self.axes.names}
+            for violation in check_feedback(self.axes.feedback, setpoint, self.config.axes):
+                self._fault(violation.code, violation.axis, violation.text)
+            if not self.axes.all_homed():
+                self._fault("E016", "axes", "an axis lost its home position")
+
+    def _check_reset(self) -> None:
+        if self._reset_pending_since is None:
+            return
+        if self.state not in LATCHED_STATES:
+            self._reset_pending_since = None
+            return
+        causes = [f"{n} still in fault 0x{fb.fault_code:04X}"
+                  for n, fb in self.axes.feedback.items() if fb.faulted]
+        if not self.inputs.estop_ok:
+            causes.append("emergency stop still pressed")
+        if not self._comms_ok:
+            causes.append("communication not restored")
+        if not causes:
+            self._reset_pending_since = None
+            self.alarms.clear_all_conditions()
+            self.axes.hold_where_they_are()
+            self.manual.sync(self.axes)
+            self.message = "reset done"
+            self._transition(Event.RESET)
+        elif self.now_s - self._reset_pending_since > RESET_TIMEOUT_S:
+            self._reset_pending_since = None
+            self._refuse("reset failed: " + "; ".join(causes))
+
+    def _run_activity(self) -> None:
+        if self.state is MachineState.HOMING and self.homing is not None:
+            self.homing.tick(self.now_s, self.axes)
+            if self.homing.done:
+                self.homing = None
+                self._transition(Event.HOMING_DONE)
+        elif self.state is MachineState.MANUAL:
+            if self.homing is not None:
+                self.homing.tick(self.now_s, self.axes)
+                if self.homing.done:
+                    self.homing = None
+                    self.manual.sync(self.axes)
+            else:
+                warning = self.manual.tick(self.now_s, self.config.period_s, self.axes)
+                if warning:
+                    self.alarms.raise_alarm("W101", warning)
+                    self.alarms.clear("W101", warning)
+        elif self.state is MachineState.AUTOMATIC and self.cycle is not None:
+            self.outputs = self.cycle.tick(self.now_s, self.inputs, self.outputs, self.axes)
+            self._publish_plan()
+            if self.cycle.finished:
+                self._finish_cycle()
+        elif self.state is MachineState.STOPPING:
+            self._run_stopping()
+
+    def _run_stopping(self) -> None:
+        cycle = self.cycle
+        if cycle is not None:
+            if cycle.moving and not cycle.stopped:
+                self.outputs = cycle.tick(self.now_s, self.inputs, self.outputs, self.axes)
+                return
+            self._record_abort("")
+            self.cycle = None
+        if self.axes.standing_still(tolerance=0.5):
+            self.outputs = replace(self.outputs, spindle_on=False, centering_extend=False)
+            self.axes.hold_where_they_are()
+            self._transition(Event.STOPPED)
+
+    def _publish_plan(self) -> None:
+        cycle = self.cycle
+        if cycle is None or cycle.planned is None or cycle.plan_counter == 0:
+            return
+        if getattr(cycle, "_published", False):
+            return
+        cycle._published = True  # type: ignore[attr-defined]
+        self._plan_id += 1
+        self._plans = {self._plan_id: build_preview(self._plan_id, cycle.planned)}
+
+    def _finish_cycle(self) -> None:
+        cycle = self.cycle
+        assert cycle is not None
+        cycle_time_s = self.now_s - cycle.started_s
+        piece = self._piece_record(cycle, cycle_time_s, "ok", None)
+        self.store.record_piece(piece)
+        self.pieces_shift += 1
+        self.pieces_total += 1
+        self.last_width_mm = cycle.outcome.width_mm
+        self.last_cycle_time_s = cycle_time_s
+        self.finished_cycles.append((piece, cycle))
+        del self.finished_cycles[:-10]
+        self.cycle = None
+        self._transition(Event.CYCLE_DONE)
+
+    def _piece_record(self, cycle: AutomaticCycle, cycle_time_s: float, result: str,
+                      alarm: str | None) -> PieceRecord:
+        o = cycle.outcome
+        return PieceRecord(self._wall_clock(), cycle.recipe.id, cycle.recipe.name, o.width_mm,
+                           o.d_mm, o.r_mm, o.tilt_deg, cycle_time_s, result, alarm)
+
+    def _record_abort(self, alarm_code: str) -> None:
+        cycle = self.cycle
+        if cycle is None or cycle.step.name == "WAIT_FOR_PART":
+            return
+        result = "rejected" if cycle.planned is None else "aborted"
+        piece = self._piece_record(cycle, self.now_s - cycle.started_s, result,
+                                   alarm_code or None)
+        self.store.record_piece(piece)
+        self.finished_cycles.append((piece, cycle))
+        del self.finished_cycles[:-10]
+
+    def _watch_latched_motion(self) -> None:
+        """Latched states: once the axes stand still, take their power (stop category 1)."""
+        if self.state in LATCHED_STATES and self.axes.standing_still(tolerance=0.5):
+            self.axes.disable_all()
+
+    def _lamps(self) -> None:
+        running = self.state in (MachineState.AUTOMATIC, MachineState.HOMING)
+        self.outputs = replace(
+            self.outputs,
+            lamp_green=running,
+            lamp_yellow=self.state in (MachineState.MANUAL, MachineState.STOPPING,
+                                       MachineState.NOT_HOMED),
+            lamp_red=self.state in LATCHED_STATES,
+        )
+
+    # ---------------------------------------------------------------- the picture
+    def state_text(self) -> str:
+        if self.state is MachineState.AUTOMATIC and self.cycle is not None:
+            return f"automatic: {self.cycle.step.value}"
+        if self.state in LATCHED_STATES:
+            faults = self.alarms.active_faults()
+            return f"{self.state.value}: {faults[0].text}" if faults else self.state.value
+        if self.state is MachineState.MANUAL and self.homing is not None:
+            return f"manual: homing {self.homing.current_axis}"
+        if self.state is MachineState.HOMING and self.homing is not None:
+            return f"homing {self.homing.current_axis}"
+        return self.state.value
+
+    def snapshot(self) -> MachineSnapshot:
+        self._seq += 1
+        axes = tuple(
+            AxisView(n, self.config.axes[n].unit, fb.position, self.axes.command.get(n, 0.0),
+                     fb.following_error, fb.homed, fb.enabled, fb.faulted, fb.fault_code,
+                     fb.homing_active, fb.limit_negative, fb.limit_positive,
+                     fb.power_state.value)
+            for n, fb in self.axes.feedback.items())
+        cycle = self.cycle
+        planned = cycle.planned if cycle is not None else None
+        cycle_view = CycleView(
+            step=cycle.step if cycle is not None else None,
+            elapsed_s=self.now_s - cycle.started_s if cycle is not None else 0.0,
+            remaining_s=cycle.remaining_s() if cycle is not None else 0.0,
+            width_mm=cycle.outcome.width_mm if cycle is not None else None,
+            d_mm=planned.profile.D if planned else None,
+            r_mm=planned.profile.R if planned else None,
+            tilt_deg=planned.tilt_deg if planned else None,
+        )
+        recipe = self.recipe
+        return MachineSnapshot(
+            seq=self._seq, machine_time_s=self.now_s, wall_time=self._wall_clock(),
+            state=self.state, mode=self.mode, state_text=self.state_text(),
+            backend=self.backend.name, axes=axes, inputs=self.inputs, outputs=self.outputs,
+            alarms=self.alarms.views(), recipe_id=recipe.id if recipe else None,
+            recipe_name=recipe.name if recipe else "", pieces_shift=self.pieces_shift,
+            pieces_total=self.pieces_total, last_width_mm=self.last_width_mm,
+            last_cycle_time_s=self.last_cycle_time_s, cycle=cycle_view,
+            feed_override_pct=self.feed_override_pct, plan_id=self._plan_id,
+            jog_xy=self.manual.speed("XY"), jog_z=self.manual.speed("Z"),
+            allowed=allowed_commands(self.facts()), message=self.message)
+
+    def plan_preview(self, plan_id: int) -> PlanPreview | None:
+        return self._plans.get(plan_id)

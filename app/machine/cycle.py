@@ -1,0 +1,279 @@
+"""The automatic cycle (spec section 4, the original Step routine) as a sequence of steps.
+
+Each period the controller calls :meth:`AutomaticCycle.tick` with what the inputs read; the
+cycle sets the outputs and the axis commands, and either carries on, ends (the piece is done),
+or raises :class:`CycleFault` naming the alarm. Every wait has a timeout: a sensor that never
+arrives is an alarm, never a machine that waits for ever.
+
+Steps: wait for a board (and the Start that began the cycle) -> centre -> clamp -> measure ->
+plan (on a worker, the axes stand still) -> start the spindle -> cut side A -> reposition and
+tilt -> cut side B -> return (spindle off) -> unclamp -> done.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+
+from app.config import MachineConfig
+from app.data.recipe import Recipe
+from app.drivers.contracts import CommunicationError, InputImage, OutputImage, WidthGauge
+from app.machine.axes import AxisGroup
+from app.machine.cycle_plan import PlannedStave, PlanningError
+from app.machine.executor import PathExecutor
+from app.machine.planner.trajectory import Phase
+from app.machine.states import CycleStep
+
+PlanJob = Callable[[], PlannedStave]
+PlanSubmitter = Callable[[PlanJob], "concurrent.futures.Future[PlannedStave]"]
+
+GAUGE_TIMEOUT_S = 2.0
+
+_PHASE_STEPS: dict[Phase, CycleStep] = {
+    Phase.APPROACH: CycleStep.CUTTING_A,
+    Phase.CUT_A: CycleStep.CUTTING_A,
+    Phase.REPOSITION: CycleStep.REPOSITIONING,
+    Phase.CUT_B: CycleStep.CUTTING_B,
+    Phase.RETURN: CycleStep.RETURNING,
+    Phase.POINT_TO_POINT: CycleStep.CUTTING_A,
+}
+
+
+def run_now(job: PlanJob) -> concurrent.futures.Future[PlannedStave]:
+    """Plan on the calling thread (simulated clock: deterministic and instant)."""
+    future: concurrent.futures.Future[PlannedStave] = concurrent.futures.Future()
+    try:
+        future.set_result(job())
+    except Exception as exc:  # noqa: BLE001 - handed to the cycle through the future
+        future.set_exception(exc)
+    return future
+
+
+class CycleFault(Exception):
+    """The cycle cannot go on: raise alarm ``code`` at ``source``."""
+
+    def __init__(self, code: str, detail: str, source: str = "") -> None:
+        super().__init__(detail)
+        self.code = code
+        self.detail = detail
+        self.source = source
+
+
+@dataclass
+class CycleOutcome:
+    """What a finished cycle reports (for the counter, the record and the screen)."""
+
+    width_mm: float | None = None
+    d_mm: float | None = None
+    r_mm: float | None = None
+    tilt_deg: float | None = None
+    cut_time_a_s: float = 0.0
+    cut_time_b_s: float = 0.0
+    cut_length_a_mm: float = 0.0
+    cut_length_b_mm: float = 0.0
+
+
+class AutomaticCycle:
+    """One board through the machine."""
+
+    def __init__(
+        self,
+        *,
+        recipe: Recipe,
+        config: MachineConfig,
+        gauge: WidthGauge,
+        plan_job: Callable[[float, tuple[float, float, float]], PlannedStave],
+        submit: PlanSubmitter,
+        started_s: float,
+        feed_override_pct: float,
+    ) -> None:
+        self.recipe = recipe
+        self._config = config
+        self._gauge = gauge
+        self._plan_job = plan_job
+        self._submit = submit
+        self.started_s = started_s
+        self.step = CycleStep.WAIT_FOR_PART
+        self._step_started_s = started_s
+        self._plan_future: concurrent.futures.Future[PlannedStave] | None = None
+        self.planned: PlannedStave | None = None
+        self.executor: PathExecutor | None = None
+        self.outcome = CycleOutcome()
+        self.finished = False
+        self._stop_requested = False
+        self._override_pct = feed_override_pct
+        self.plan_counter = 0
+
+    # -- helpers ---------------------------------------------------------------------------
+    def _go(self, step: CycleStep, now_s: float) -> None:
+        self.step = step
+        self._step_started_s = now_s
+
+    def _waited(self, now_s: float) -> float:
+        return now_s - self._step_started_s
+
+    def _wait_sensor(self, ok: bool, now_s: float, travel_s: float, code: str,
+                     what: str) -> bool:
+        if ok:
+            return True
+        limit_s = travel_s + self._config.io.sensor_timeout_s
+        if self._waited(now_s) > limit_s:
+            raise CycleFault(code, f"{what} not reached after {limit_s:.1f} s")
+        return False
+
+    @property
+    def moving(self) -> bool:
+        """True while the path executor drives the axes."""
+        return self.executor is not None and not self.executor.done
+
+    @property
+    def elapsed_s(self) -> float:
+        return self._step_started_s - self.started_s if self.finished else 0.0
+
+    def remaining_s(self) -> float:
+        if self.executor is not None:
+            return self.executor.remaining_s
+        if self.planned is not None:
+            return self.planned.plan.duration_s
+        return 0.0
+
+    def set_override(self, percent: float) -> None:
+        self._override_pct = percent
+        if self.executor is not None:
+            self.executor.set_override(percent)
+
+    def request_stop(self) -> None:
+        """Controlled stop: along the path if cutting, at once otherwise."""
+        self._stop_requested = True
+        if self.executor is not None:
+            self.executor.request_stop()
+
+    @property
+    def stopped(self) -> bool:
+        if not self._stop_requested:
+            return False
+        return self.executor is None or self.executor.stopped or self.executor.done
+
+    def abort(self) -> None:
+        """Immediate stop (E-stop, fault): freeze the setpoints where they are."""
+        self._stop_requested = True
+        if self.executor is not None:
+            self.executor.abort()
+        if self._plan_future is not None:
+            self._plan_future.cancel()
+
+    # -- the sequence ----------------------------------------------------------------------
+    def tick(self, now_s: float, inputs: InputImage, outputs: OutputImage,
+             axes: AxisGroup) -> OutputImage:
+        """Advance the cycle by one period; returns the outputs to write."""
+        io = self._config.io
+        step = self.step
+        if step is not CycleStep.WAIT_FOR_PART and step is not CycleStep.UNCLAMPING \
+                and not inputs.part_present:
+            raise CycleFault("E044", f"the part-present sensor went off while {step.value}")
+
+        if step is CycleStep.WAIT_FOR_PART:
+            axes.request_enable()
+            if inputs.part_present and axes.all_enabled():
+                outputs = replace(outputs, clamps_close=False, centering_extend=True)
+                self._go(CycleStep.CENTERING, now_s)
+        elif step is CycleStep.CENTERING:
+            outputs = replace(outputs, centering_extend=True)
+            if self._wait_sensor(inputs.centering_extended, now_s, io.centering_time_s,
+                                 "E041", "centering device extended"):
+                outputs = replace(outputs, clamps_close=True)
+                self._go(CycleStep.CLAMPING, now_s)
+        elif step is CycleStep.CLAMPING:
+            outputs = replace(outputs, clamps_close=True)
+            if self._wait_sensor(inputs.clamps_closed, now_s, io.clamp_time_s, "E040",
+                                 "clamps closed"):
+                outputs = replace(outputs, centering_extend=False)
+                self._request_width()
+                self._go(CycleStep.MEASURING, now_s)
+        elif step is CycleStep.MEASURING:
+            outputs = self._measure(now_s, inputs, outputs, axes)
+        elif step is CycleStep.STARTING_SPINDLE:
+            outputs = replace(outputs, spindle_on=True)
+            if self._wait_sensor(inputs.spindle_running, now_s, io.spindle_runup_s, "E042",
+                                 "spindle running feedback"):
+                assert self.planned is not None
+                self.executor = PathExecutor(self.planned.plan, self._config.period_s)
+                self.executor.set_override(self._override_pct)
+                self._go(CycleStep.CUTTING_A, now_s)
+        elif step in (CycleStep.CUTTING_A, CycleStep.REPOSITIONING, CycleStep.CUTTING_B,
+                      CycleStep.RETURNING):
+            outputs = self._cut(now_s, inputs, outputs, axes)
+        elif step is CycleStep.UNCLAMPING:
+            outputs = replace(outputs, clamps_close=False, spindle_on=False)
+            if self._wait_sensor(inputs.clamps_open, now_s, io.clamp_time_s, "E040",
+                                 "clamps open"):
+                self.finished = True
+                self._step_started_s = now_s
+        return outputs
+
+    def _request_width(self) -> None:
+        try:
+            self._gauge.request()
+        except CommunicationError as exc:
+            raise CycleFault("E033", str(exc), "gauge") from exc
+
+    def _measure(self, now_s: float, inputs: InputImage, outputs: OutputImage,
+                 axes: AxisGroup) -> OutputImage:
+        if self._plan_future is None:
+            try:
+                reading = self._gauge.poll()
+            except CommunicationError as exc:
+                raise CycleFault("E033", str(exc), "gauge") from exc
+            if reading is None:
+                if self._waited(now_s) > GAUGE_TIMEOUT_S:
+                    raise CycleFault("E030", f"no reading within {GAUGE_TIMEOUT_S:.1f} s",
+                                     "gauge")
+                return outputs
+            if not reading.ok or reading.width_mm is None:
+                raise CycleFault("E031", f"{reading.error or 'no width'} (raw {reading.raw!r})",
+                                 "gauge")
+            width_mm = reading.width_mm
+            self.outcome.width_mm = width_mm
+            start = axes.positions()
+            self._plan_future = self._submit(lambda: self._plan_job(width_mm, start))
+            return outputs
+        if not self._plan_future.done():
+            return outputs
+        try:
+            planned = self._plan_future.result()
+        except PlanningError as exc:
+            raise CycleFault(exc.code, str(exc), "recipe") from exc
+        except Exception as exc:  # noqa: BLE001 - any planner failure is an alarm, not a crash
+            raise CycleFault("E051", f"{type(exc).__name__}: {exc}", "planner") from exc
+        self.planned = planned
+        self.plan_counter += 1
+        self.outcome.d_mm = planned.profile.D
+        self.outcome.r_mm = planned.profile.R
+        self.outcome.tilt_deg = planned.tilt_deg
+        self.outcome.cut_length_a_mm = planned.plan.cut_length_mm("A")
+        self.outcome.cut_length_b_mm = planned.plan.cut_length_mm("B")
+        self._go(CycleStep.STARTING_SPINDLE, now_s)
+        return replace(outputs, spindle_on=True)
+
+    def _cut(self, now_s: float, inputs: InputImage, outputs: OutputImage,
+             axes: AxisGroup) -> OutputImage:
+        executor = self.executor
+        assert executor is not None
+        out = executor.step()
+        axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
+        step = _PHASE_STEPS[out.phase]
+        if step is not self.step:
+            self._go(step, now_s)
+        if out.cutting and not inputs.spindle_running:
+            raise CycleFault("E043", "spindle running feedback lost", "spindle")
+        if out.phase is Phase.RETURN:
+            outputs = replace(outputs, spindle_on=False)
+        if out.done:
+            plan = self.planned.plan if self.planned else None
+            if plan is not None:
+                self.outcome.cut_time_a_s = plan.cut_time_s("A")
+                self.outcome.cut_time_b_s = plan.cut_time_s("B")
+            outputs = replace(outputs, spindle_on=False, clamps_close=False)
+            self._go(CycleStep.UNCLAMPING, now_s)
+        return outputs

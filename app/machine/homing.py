@@ -1,0 +1,89 @@
+"""Homing one axis or all of them, one after the other, through the drives' homing method.
+
+Why one at a time and in the order Z, Y, X: the tilt is brought upright first so that the
+cutter cannot touch the table edge while Y and X travel to their switches; a single axis
+moving at a time is also what a technician watching the machine expects.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from app.config import AxisConfig
+from app.machine.axes import AxisGroup
+
+HOMING_ORDER: tuple[str, ...] = ("Z", "Y", "X")
+
+
+class HomingFailed(Exception):
+    def __init__(self, axis: str, detail: str) -> None:
+        super().__init__(f"{axis}: {detail}")
+        self.axis = axis
+        self.detail = detail
+
+
+def homing_timeout_s(config: AxisConfig) -> float:
+    """The longest a correct homing can take: the whole travel at homing speed, there and
+    back, plus the slow approach."""
+    travel = config.max_position - config.min_position + 2 * config.limit_switch_margin
+    return 2.5 * travel / config.homing_velocity + 5.0
+
+
+@dataclass
+class HomingSequence:
+    axes_to_home: Sequence[str]
+    configs: Mapping[str, AxisConfig]
+    started_s: float
+    _index: int = 0
+    _phase: str = "enable"  # enable -> start -> running
+    _phase_started_s: float = 0.0
+    done: bool = False
+    log: list[str] = field(default_factory=list)
+
+    @classmethod
+    def for_axes(cls, axis: str, configs: Mapping[str, AxisConfig],
+                 now_s: float) -> HomingSequence:
+        order = [a for a in HOMING_ORDER if not axis or a == axis]
+        return cls(order, configs, now_s, _phase_started_s=now_s)
+
+    @property
+    def current_axis(self) -> str:
+        return self.axes_to_home[self._index] if self._index < len(self.axes_to_home) else ""
+
+    def _next_phase(self, phase: str, now_s: float) -> None:
+        self._phase = phase
+        self._phase_started_s = now_s
+
+    def tick(self, now_s: float, axes: AxisGroup) -> None:
+        """Advance; raises HomingFailed on a timeout or a drive that refuses."""
+        if self.done:
+            return
+        name = self.current_axis
+        feedback = axes.feedback[name]
+        waited_s = now_s - self._phase_started_s
+        if feedback.faulted:
+            raise HomingFailed(name, f"drive fault 0x{feedback.fault_code:04X} while homing")
+        if self._phase == "enable":
+            if axes.request_enable():
+                axes.motion.start_homing(name)
+                self._next_phase("start", now_s)
+            elif waited_s > 2.0:
+                raise HomingFailed(name, "drive did not enable within 2 s")
+        elif self._phase == "start":
+            if feedback.homing_active:
+                self._next_phase("running", now_s)
+            elif waited_s > 1.0:
+                raise HomingFailed(name, "drive did not start homing within 1 s")
+        elif self._phase == "running":
+            if not feedback.homing_active and feedback.homed:
+                self.log.append(f"{name} homed at {feedback.position:.3f}")
+                self._index += 1
+                if self._index >= len(self.axes_to_home):
+                    self.done = True
+                else:
+                    self._next_phase("enable", now_s)
+            elif not feedback.homing_active:
+                raise HomingFailed(name, "homing ended without finding the home switch")
+            elif waited_s > homing_timeout_s(self.configs[name]):
+                raise HomingFailed(name, f"not homed after {waited_s:.0f} s")

@@ -1,0 +1,113 @@
+"""Manual mode: continuous and step jog per axis, with a dead-man on the screen's refresh.
+
+Why a dead-man here: the screen repeats JogContinuous while the button is held. If the
+release is lost (a glove slides off the panel, the link hiccups, the GUI freezes), no refresh
+arrives and the axis stops after JOG_DEADMAN_S on its own (the single most requested jog
+behaviour in the CNC HMI issue trackers).
+
+Jog speed and acceleration are manual mode's own, set for X-Y together and for Z, and never
+change the automatic ones. The motion itself (jerk-limited, soft limits, back out of a limit
+only in the safe direction) is the planner's :class:`~app.machine.planner.jog.Jogger`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from app.config import AxisConfig
+from app.machine.axes import AxisGroup
+from app.machine.commands import JOG_DEADMAN_S
+from app.machine.planner.jog import Jogger
+
+GROUPS: dict[str, tuple[str, ...]] = {"XY": ("X", "Y"), "Z": ("Z",)}
+
+
+class ManualControl:
+    def __init__(self, configs: Mapping[str, AxisConfig]) -> None:
+        self._configs = configs
+        self._joggers: dict[str, Jogger] = {
+            name: Jogger.from_config(cfg) for name, cfg in configs.items()}
+        self._speeds: dict[str, tuple[float, float]] = {
+            "XY": (configs["X"].jog_velocity, configs["X"].jog_acceleration),
+            "Z": (configs["Z"].jog_velocity, configs["Z"].jog_acceleration),
+        }
+        self._last_refresh_s: dict[str, float] = {}
+
+    def speed(self, group: str) -> tuple[float, float]:
+        return self._speeds[group]
+
+    def set_speed(self, group: str, velocity: float, acceleration: float) -> str:
+        if group not in GROUPS:
+            return f"jog group {group!r} is not allowed: XY or Z"
+        for name in GROUPS[group]:
+            cfg = self._configs[name]
+            if not 0 < velocity <= cfg.max_velocity:
+                return (f"jog speed {velocity:g} {cfg.unit}/s is not allowed: "
+                        f"above 0 and at most {cfg.max_velocity:g}")
+            if not 0 < acceleration <= cfg.max_acceleration:
+                return (f"jog acceleration {acceleration:g} {cfg.unit}/s² is not allowed: "
+                        f"above 0 and at most {cfg.max_acceleration:g}")
+        self._speeds[group] = (velocity, acceleration)
+        for name in GROUPS[group]:
+            self._joggers[name].set_limits(velocity, acceleration)
+        return ""
+
+    def sync(self, axes: AxisGroup) -> None:
+        """Start every jogger from where its axis is (entering manual, after homing)."""
+        for name, jogger in self._joggers.items():
+            if name in axes.feedback:
+                jogger.reset(axes.position(name))
+
+    def _check_axis(self, axis: str, axes: AxisGroup) -> str:
+        if axis not in self._joggers:
+            return f"axis {axis!r} is not allowed: X, Y or Z"
+        if not axes.request_enable():
+            return ""  # the drives are being enabled; the jog starts once they are
+        return ""
+
+    def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> str:
+        if reason := self._check_axis(axis, axes):
+            return reason
+        if direction not in (-1, 1):
+            return f"jog direction {direction} is not allowed: -1 or 1"
+        self._last_refresh_s[axis] = now_s
+        return self._joggers[axis].press(direction)
+
+    def step(self, axis: str, distance: float, axes: AxisGroup) -> str:
+        if reason := self._check_axis(axis, axes):
+            return reason
+        return self._joggers[axis].step(distance)
+
+    def release(self, axis: str = "") -> None:
+        for name, jogger in self._joggers.items():
+            if not axis or axis == name:
+                jogger.release()
+                self._last_refresh_s.pop(name, None)
+
+    def release_all(self, immediate: bool = False) -> None:
+        for jogger in self._joggers.values():
+            if immediate:
+                jogger.stop_immediately()
+            else:
+                jogger.release()
+        self._last_refresh_s.clear()
+
+    def tick(self, now_s: float, period_s: float, axes: AxisGroup) -> str:
+        """Advance every jogger by one period; returns an axis name whose dead-man expired."""
+        expired = ""
+        for name, last_s in list(self._last_refresh_s.items()):
+            if now_s - last_s > JOG_DEADMAN_S:
+                self._joggers[name].release()
+                del self._last_refresh_s[name]
+                expired = name
+        enabled = axes.all_enabled()
+        for name, jogger in self._joggers.items():
+            if name not in axes.feedback:
+                continue
+            if not enabled:
+                if jogger.moving:
+                    axes.request_enable()
+                jogger.reset(axes.position(name))
+                continue
+            axes.command[name] = jogger.next_position(period_s)
+        return expired

@@ -1,0 +1,118 @@
+"""The immutable picture of the machine that the screens sample.
+
+Why a snapshot and not signals from the machine: the machine runs in its own process at the
+setpoint period; the GUI samples the latest snapshot at 20-50 Hz and draws only what changed
+(after QtPyVCP's status plugin). A slow screen can drop snapshots, never delay the machine.
+Everything here is plain data that pickles small; the tool path preview, which is large, is
+sent once per plan as a :class:`PlanPreview` and referred to by ``plan_id``.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+from app.drivers.contracts import InputImage, OutputImage
+from app.machine.states import CycleStep, MachineState, Mode
+
+
+class AlarmState(enum.Enum):
+    """ISA-18.2 alarm states."""
+
+    NORMAL = "normal"
+    ACTIVE_UNACKED = "active, unacknowledged"
+    ACTIVE_ACKED = "active, acknowledged"
+    RTN_UNACKED = "returned to normal, unacknowledged"
+
+
+@dataclass(frozen=True)
+class AxisView:
+    name: str
+    unit: str
+    position: float
+    command: float
+    following_error: float
+    homed: bool
+    enabled: bool
+    faulted: bool
+    fault_code: int
+    homing: bool
+    limit_negative: bool
+    limit_positive: bool
+    power_state: str
+
+
+@dataclass(frozen=True)
+class AlarmView:
+    alarm_id: int
+    code: str
+    text: str
+    source: str
+    state: AlarmState
+    raised_at: float  # epoch seconds
+    severity: str  # "fault" (stops the machine) or "warning"
+
+
+@dataclass(frozen=True)
+class CycleView:
+    step: CycleStep | None
+    elapsed_s: float
+    remaining_s: float
+    width_mm: float | None
+    d_mm: float | None
+    r_mm: float | None
+    tilt_deg: float | None
+
+
+@dataclass(frozen=True)
+class PlanPreview:
+    """What the plan view draws: the stave outline and the tool path, in machine X/Y."""
+
+    plan_id: int
+    outline_xy: tuple[tuple[float, float], ...]
+    toolpath_xy: tuple[tuple[float, float], ...]
+    cutting_mask: tuple[bool, ...]
+
+
+@dataclass(frozen=True)
+class MachineSnapshot:
+    seq: int
+    machine_time_s: float
+    wall_time: float  # epoch seconds
+    state: MachineState
+    mode: Mode
+    state_text: str
+    backend: str
+    axes: tuple[AxisView, ...]
+    inputs: InputImage
+    outputs: OutputImage
+    alarms: tuple[AlarmView, ...]  # every alarm not NORMAL, newest first
+    recipe_id: int | None
+    recipe_name: str
+    pieces_shift: int
+    pieces_total: int
+    last_width_mm: float | None
+    last_cycle_time_s: float | None
+    cycle: CycleView
+    feed_override_pct: float
+    plan_id: int  # 0: no plan
+    jog_xy: tuple[float, float]  # velocity, acceleration of manual X-Y jog
+    jog_z: tuple[float, float]
+    # command name (the class name in app.machine.commands) -> "" if allowed now, or why not
+    allowed: dict[str, str] = field(default_factory=dict)
+    message: str = ""  # the last refusal or notice for the operator
+
+    def axis(self, name: str) -> AxisView:
+        for axis in self.axes:
+            if axis.name == name:
+                return axis
+        raise KeyError(name)
+
+    @property
+    def all_homed(self) -> bool:
+        return all(a.homed for a in self.axes)
+
+    @property
+    def unacknowledged_alarms(self) -> int:
+        return sum(1 for a in self.alarms
+                   if a.state in (AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED))

@@ -1,0 +1,55 @@
+"""What the machine needs from the database, as a narrow protocol.
+
+Why a protocol here and not direct database calls: the machine layer must run the same on
+the panel (where writes go through a writer thread so that an fsync never delays a setpoint)
+and in tests and ``stave simulate`` (where they are written at once). Both adapters wrap the
+one data layer API, ``app.data.database.Database``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Protocol
+
+from app.data.recipe import Recipe
+from app.machine.alarms import AlarmTransition
+
+
+@dataclass(frozen=True)
+class PieceRecord:
+    """One board through the machine, as the machine layer reports it."""
+
+    time: float  # epoch seconds at the end of the cycle
+    recipe_id: int | None
+    recipe_name: str
+    width_mm: float | None
+    d_mm: float | None
+    r_mm: float | None
+    tilt_deg: float | None
+    cycle_time_s: float
+    result: str  # "ok", "rejected" or "aborted"
+    alarm_code: str | None = None
+
+
+class MachineStore(Protocol):
+    def recipe(self, recipe_id: int) -> Recipe | None: ...
+
+    def first_recipe_id(self) -> int | None: ...
+
+    def recipe_by_name(self, name: str) -> Recipe | None: ...
+
+    def recipes(self) -> list[Recipe]: ...
+
+    def save_recipe(self, recipe: Recipe) -> Recipe:
+        """Store (insert or update by name) a recipe, validated; returns it with its id."""
+        ...
+
+    def parameters(self) -> dict[str, float]: ...
+
+    def piece_counts(self, shift_start: float) -> tuple[int, int]: ...
+
+    def record_piece(self, piece: PieceRecord) -> None: ...
+
+    def record_alarm(self, transition: AlarmTransition) -> None: ...
+
+    def close(self) -> None: ...

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Shared set-up for run.sh and test.sh: a .venv with the app (and, with "dev", its test tools)
+# and the Qt runtime libraries this machine lacks. Idempotent and quiet when nothing is missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+extra="${1:-}"
+
+PYTHON="${PYTHON:-python3}"
+if ! "$PYTHON" -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null; then
+  echo "stave: Python 3.11 or newer is needed (found: $("$PYTHON" --version 2>&1))" >&2
+  exit 2
+fi
+
+# Debian packages: the venv module, and the libraries PySide6's Qt needs (xcb on a desktop,
+# offscreen in tests). Installed with apt-get when root, otherwise the exact command is shown.
+debs=(python3-venv libgl1 libegl1 libopengl0 libxkbcommon0 libxkbcommon-x11-0 libfontconfig1
+      libdbus-1-3 libglib2.0-0 libxcb-cursor0 libxcb-icccm4 libxcb-image0 libxcb-keysyms1
+      libxcb-randr0 libxcb-render-util0 libxcb-shape0 libxcb-xinerama0 libxcb-xkb1
+      libxcb-xfixes0 libx11-xcb1 fonts-dejavu-core)
+if command -v dpkg >/dev/null 2>&1; then
+  missing=()
+  for deb in "${debs[@]}"; do
+    dpkg -s "$deb" >/dev/null 2>&1 || missing+=("$deb")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    if [ "$(id -u)" = 0 ]; then
+      echo "stave: installing system packages: ${missing[*]}" >&2
+      apt-get update -qq >/dev/null
+      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+    else
+      echo "stave: missing system packages; install them with:" >&2
+      echo "  sudo apt-get install -y ${missing[*]}" >&2
+      exit 2
+    fi
+  fi
+fi
+
+if [ ! -x .venv/bin/python ]; then
+  "$PYTHON" -m venv .venv
+fi
+# Reinstall only when pyproject.toml (the dependency list) changed.
+stamp=".venv/.installed-${extra:-app}-$(sha256sum pyproject.toml | cut -c1-16)"
+if [ ! -f "$stamp" ]; then
+  .venv/bin/python -m pip install -q --disable-pip-version-check --upgrade pip >&2
+  if [ -n "$extra" ]; then
+    .venv/bin/python -m pip install -q --disable-pip-version-check -e ".[$extra]" >&2
+  else
+    .venv/bin/python -m pip install -q --disable-pip-version-check -e . >&2
+  fi
+  rm -f .venv/.installed-"${extra:-app}"-*
+  touch "$stamp"
+fi

@@ -1,0 +1,73 @@
+"""The ISA-18.2 life cycle: every transition of the table, and the history kept."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.machine.alarms import ALARM_TRANSITIONS, CATALOGUE, AlarmAction, AlarmManager
+from app.machine.snapshot import AlarmState
+
+
+def make() -> tuple[AlarmManager, list]:
+    seen: list = []
+    return AlarmManager(on_transition=seen.append, wall_clock=lambda: 1000.0), seen
+
+
+def drive_to(manager: AlarmManager, state: AlarmState) -> None:
+    if state is AlarmState.NORMAL:
+        return
+    manager.raise_alarm("E010", "X")
+    if state is AlarmState.ACTIVE_ACKED:
+        manager.acknowledge()
+    elif state is AlarmState.RTN_UNACKED:
+        manager.clear("E010", "X")
+
+
+ACT = {
+    AlarmAction.CONDITION_ON: lambda m: m.raise_alarm("E010", "X"),
+    AlarmAction.CONDITION_OFF: lambda m: m.clear("E010", "X"),
+    AlarmAction.ACKNOWLEDGE: lambda m: m.acknowledge(),
+}
+
+
+@pytest.mark.parametrize(("key", "target"), list(ALARM_TRANSITIONS.items()),
+                         ids=[f"{s.name}-{a.name}" for (s, a) in ALARM_TRANSITIONS])
+def test_each_transition(key: tuple[AlarmState, AlarmAction], target: AlarmState) -> None:
+    state, action = key
+    manager, seen = make()
+    drive_to(manager, state)
+    before = len(seen)
+    ACT[action](manager)
+    assert len(seen) == before + 1
+    assert seen[-1].from_state is state and seen[-1].to_state is target
+    views = manager.views()
+    if target is AlarmState.NORMAL:
+        assert views == ()
+    else:
+        assert views[0].state is target
+
+
+def test_actions_outside_the_table_change_nothing() -> None:
+    manager, seen = make()
+    manager.clear("E010", "X")
+    assert manager.acknowledge() == 0
+    manager.raise_alarm("E010", "X")
+    manager.raise_alarm("E010", "X")  # already active
+    assert [t.to_state for t in seen] == [AlarmState.ACTIVE_UNACKED]
+
+
+def test_full_history_and_one_line_per_source() -> None:
+    manager, seen = make()
+    manager.raise_alarm("E010", "X", "fault code 0x2310")
+    manager.raise_alarm("E010", "Y")
+    assert len(manager.views()) == 2
+    manager.clear("E010", "X")
+    manager.acknowledge(manager.views()[-1].alarm_id)
+    assert [t.to_state for t in manager.history] == [
+        AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED,
+        AlarmState.NORMAL]
+    assert "0x2310" in seen[0].text and seen[0].source == "X"
+
+
+def test_catalogue_codes_are_unique_and_texts_clear() -> None:
+    assert all(code == d.code and d.text for code, d in CATALOGUE.items())
