@@ -1,0 +1,401 @@
+"""The path executor: one X, Y, Z setpoint per period from a planned trajectory, with feed
+override, controlled stop along the path, and immediate stop.
+
+Where it runs: the machine loop (``app.machine.runtime``) calls :meth:`PathExecutor.step`
+exactly once per period in the machine process, so no GUI work can delay it. ``step`` does
+no I/O and no allocation beyond a few small objects; the three setpoints of one period come
+from one evaluation of one trajectory, so there is no time skew between the axes.
+
+The math of override and stop. A planned chunk is x(t) = c(s(t)) (``chunk.py``): the axes
+are the exact path point at the path coordinate s. With ' = d/ds and dots = d/dt,
+
+    v = c'(s) s_dot                                      (velocity)
+    a = c'(s) s_ddot + c''(s) s_dot^2                    (acceleration)
+    j = c'(s) s_dddot + 3 c''(s) s_dot s_ddot + c'''(s) s_dot^3   (jerk)
+
+The classic time-scaling view writes s(t) = s_plan(tau(t)) with a time-scale rate
+r = dtau/dt, so v = v_plan(tau) * r: velocity is continuous iff r is, and the acceleration
+a = a_plan r^2 + v_plan r_dot shows why a step in r (or r_dot) is not allowed and why an
+override above 100 % scales a planned acceleration at its limit by r^2 beyond the limit.
+Rather than ramping r and proving the r^2, r^3 and r_dot terms stay within the limits at
+every point of every profile, the executor re-plans s(t) itself: on an override change,
+from the current state (s, s_dot, s_ddot), to the chunk's end, with the velocity limit
+scaled by the override and the chunk's acceleration and jerk limits on s unchanged (ruckig,
+time-optimal). The chunk's limits on s hold for every state inside them (``path_box``), so
+the axes stay within their velocity, acceleration and jerk limits whatever the moment of
+the change, and s_dot, s_ddot are continuous: no jump in velocity. A stop is the same with
+the target "s_dot = 0": the shortest jerk-limited deceleration, along the path (the
+setpoints are still c(s)), ending before the chunk's end. An override below 1 % holds
+(decelerates to rest on the path) until it is raised again.
+
+Time: ``elapsed_s`` counts periods. At 100 % the stream is exactly the plan sampled every
+period (the executor follows the planned ruckig trajectories, carrying the remainder of a
+period across the rest point between chunks).
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from ruckig import Trajectory as RuckigTrajectory
+
+from app.config import AxisConfig
+from app.drivers.contracts import AxisFeedback
+from app.machine.planner.chunk import (
+    MIN_RUN_OVERRIDE_PCT,
+    DofState,
+    plan_to_end,
+    plan_to_rest,
+    rest_state,
+    state_at,
+)
+from app.machine.planner.chunked import ChunkedTrajectory, PlannedChunk
+from app.machine.planner.limits import MAX_OVERRIDE_PCT
+from app.machine.planner.trajectory import Phase
+
+
+class ExecutorState(enum.Enum):
+    RUNNING = "running"
+    HOLDING = "holding (override 0)"
+    STOPPING = "stopping"
+    STOPPED = "stopped"
+    ABORTED = "aborted"
+    DONE = "done"
+
+
+@dataclass(frozen=True)
+class ExecutorOutput:
+    """The setpoints of one period (X, Y in mm, Z in deg) and their velocities."""
+
+    x: float
+    y: float
+    z: float
+    phase: Phase
+    cutting: bool
+    done: bool
+    vx: float = 0.0
+    vy: float = 0.0
+    vz: float = 0.0
+
+
+class PathExecutor:
+    """Streams a :class:`ChunkedTrajectory` (a stave plan or a point-to-point move)."""
+
+    def __init__(self, trajectory: ChunkedTrajectory, period_s: float) -> None:
+        if (
+            isinstance(period_s, bool)
+            or not isinstance(period_s, int | float)
+            or not math.isfinite(period_s)
+            or not 0.0 < period_s <= 0.1
+        ):
+            raise ValueError(f"period_s = {period_s!r} is not allowed: a number in (0, 0.1] s")
+        self._plan = trajectory
+        self._period_s = float(period_s)
+        self._index = 0
+        self._segment: RuckigTrajectory = trajectory.chunks[0].trajectory
+        self._t_local = 0.0
+        self._override_pct = 100.0
+        self._state = ExecutorState.RUNNING
+        self._elapsed_s = 0.0
+        self._remaining_cache: dict[float, tuple[float, ...]] = {}
+        self._last = self._output(self._current_dof_state())
+
+    # -- properties ------------------------------------------------------------------------
+    @property
+    def period_s(self) -> float:
+        return self._period_s
+
+    @property
+    def state(self) -> ExecutorState:
+        return self._state
+
+    @property
+    def override_pct(self) -> float:
+        return self._override_pct
+
+    @property
+    def elapsed_s(self) -> float:
+        """Time since the first step (periods x period)."""
+        return self._elapsed_s
+
+    @property
+    def done(self) -> bool:
+        return self._state is ExecutorState.DONE
+
+    @property
+    def stopped(self) -> bool:
+        """True once a controlled stop has come to rest, or after abort()."""
+        return self._state in (ExecutorState.STOPPED, ExecutorState.ABORTED)
+
+    @property
+    def aborted(self) -> bool:
+        return self._state is ExecutorState.ABORTED
+
+    @property
+    def phase(self) -> Phase:
+        return self._chunk.chunk.phase
+
+    @property
+    def last_output(self) -> ExecutorOutput:
+        return self._last
+
+    @property
+    def progress(self) -> float:
+        """0 .. 1: the planned (100 %) time of the path covered so far."""
+        if self.done:
+            return 1.0
+        planned = self._chunk
+        dofs = planned.chunk.dofs
+        position = self._current_dof_state()[0][0]
+        span = dofs[0].end - dofs[0].start
+        fraction = 1.0 if span == 0.0 else min(max((position - dofs[0].start) / span, 0.0), 1.0)
+        return (planned.t_start_s + fraction * planned.duration_s) / self._plan.duration_s
+
+    @property
+    def remaining_s(self) -> float:
+        """Time to the end at the current override; to rest while stopping; 0 once done,
+        stopped or aborted; inf while holding (override below 1 %)."""
+        if self._state in (ExecutorState.DONE, ExecutorState.STOPPED, ExecutorState.ABORTED):
+            return 0.0
+        here = max(float(self._segment.duration) - self._t_local, 0.0)
+        if self._state is ExecutorState.STOPPING:
+            return here
+        if self._state is ExecutorState.HOLDING:
+            return math.inf
+        return here + sum(self._future_durations()[self._index + 1 :])
+
+    # -- commands --------------------------------------------------------------------------
+    def set_override(self, percent: float) -> None:
+        """Feed override, 0 .. 120 %. Takes effect at once, without a jump in velocity."""
+        if (
+            isinstance(percent, bool)
+            or not isinstance(percent, int | float)
+            or not math.isfinite(percent)
+            or not 0.0 <= percent <= MAX_OVERRIDE_PCT
+        ):
+            raise ValueError(
+                f"override percent = {percent!r} is not allowed: "
+                f"a number from 0 to {MAX_OVERRIDE_PCT:g}"
+            )
+        percent = float(percent)
+        if percent == self._override_pct:
+            return
+        self._override_pct = percent
+        if self._state not in (ExecutorState.RUNNING, ExecutorState.HOLDING):
+            return
+        state = self._current_dof_state()
+        if percent < MIN_RUN_OVERRIDE_PCT:
+            if self._state is ExecutorState.RUNNING:
+                self._replace_segment(plan_to_rest(self._chunk.chunk, state))
+                self._state = ExecutorState.HOLDING
+            return
+        self._replace_segment(plan_to_end(self._chunk.chunk, state, percent))
+        self._state = ExecutorState.RUNNING
+
+    def request_stop(self) -> None:
+        """Controlled stop along the path (IEC 60204-1 category 2): ``stopped`` once at rest."""
+        if self._state not in (ExecutorState.RUNNING, ExecutorState.HOLDING):
+            return
+        self._replace_segment(plan_to_rest(self._chunk.chunk, self._current_dof_state()))
+        self._state = ExecutorState.STOPPING
+        if self._segment.duration <= 0.0:
+            self._state = ExecutorState.STOPPED
+
+    def abort(self) -> None:
+        """Immediate stop: every later step returns the last setpoint. The controller
+        quick-stops or disables the drives; nothing here resumes."""
+        if self._state is not ExecutorState.DONE:
+            self._state = ExecutorState.ABORTED
+
+    # -- the period --------------------------------------------------------------------------
+    def step(self) -> ExecutorOutput:
+        """Advance one period and return its setpoints."""
+        if self._state in (ExecutorState.DONE, ExecutorState.STOPPED, ExecutorState.ABORTED):
+            return self._last
+        self._elapsed_s += self._period_s
+        self._t_local += self._period_s
+        if self._state is ExecutorState.RUNNING:
+            while self._t_local >= self._segment.duration:
+                carry = self._t_local - self._segment.duration
+                if self._index + 1 >= len(self._plan.chunks):
+                    self._state = ExecutorState.DONE
+                    self._t_local = self._segment.duration
+                    self._last = self._end_output()
+                    return self._last
+                self._index += 1
+                self._segment = self._segment_for_new_chunk()
+                self._t_local = carry
+        elif self._t_local >= self._segment.duration:  # holding or stopping: at rest now
+            self._t_local = self._segment.duration
+            if self._state is ExecutorState.STOPPING:
+                self._state = ExecutorState.STOPPED
+        self._last = self._output(self._current_dof_state())
+        return self._last
+
+    # -- internals -------------------------------------------------------------------------
+    @property
+    def _chunk(self) -> PlannedChunk:
+        return self._plan.chunks[self._index]
+
+    def _current_dof_state(self) -> DofState:
+        return state_at(self._segment, self._t_local)
+
+    def _replace_segment(self, segment: RuckigTrajectory) -> None:
+        self._segment = segment
+        self._t_local = 0.0
+
+    def _segment_for_new_chunk(self) -> RuckigTrajectory:
+        planned = self._chunk
+        if self._override_pct == 100.0:
+            return planned.trajectory
+        return plan_to_end(planned.chunk, rest_state(planned.chunk), self._override_pct)
+
+    def _output(self, state: DofState) -> ExecutorOutput:
+        chunk = self._chunk.chunk
+        (x, y, z), (vx, vy, vz), cutting = chunk.state(state[0], state[1])
+        return ExecutorOutput(x, y, z, chunk.phase, cutting, False, vx, vy, vz)
+
+    def _end_output(self) -> ExecutorOutput:
+        chunk = self._chunk.chunk
+        x, y, z = chunk.end_xyz()
+        return ExecutorOutput(x, y, z, chunk.phase, False, True)
+
+    def _future_durations(self) -> tuple[float, ...]:
+        """Duration of every chunk run from rest at the current override (cached)."""
+        key = self._override_pct
+        cached = self._remaining_cache.get(key)
+        if cached is None:
+            if key == 100.0:
+                cached = tuple(c.duration_s for c in self._plan.chunks)
+            else:
+                cached = tuple(
+                    float(plan_to_end(c.chunk, rest_state(c.chunk), key).duration)
+                    for c in self._plan.chunks
+                )
+            self._remaining_cache[key] = cached
+        return cached
+
+
+# -- supervision ------------------------------------------------------------------------------
+
+
+class ViolationKind(enum.Enum):
+    NO_FEEDBACK = "no feedback"
+    DRIVE_FAULT = "drive fault"
+    NOT_ENABLED = "drive not enabled"
+    FOLLOWING_ERROR = "following error"
+    LIMIT_POSITIVE = "positive limit switch"
+    LIMIT_NEGATIVE = "negative limit switch"
+    SOFT_LIMIT = "setpoint outside the soft limits"
+
+
+@dataclass(frozen=True)
+class Violation:
+    """One thing wrong with one axis in one period; ``message`` is ready for an alarm."""
+
+    axis: str
+    kind: ViolationKind
+    value: float
+    limit: float
+    message: str
+
+
+def check_feedback(
+    feedback: Mapping[str, AxisFeedback],
+    setpoint: Mapping[str, float] | None,
+    axes: Mapping[str, AxisConfig],
+    *,
+    motion_active: bool = True,
+) -> list[Violation]:
+    """Everything that must stop the motion this period, per axis (pure function).
+
+    Checked for every configured axis: feedback present; drive not faulted; drive enabled
+    (only while ``motion_active``: a trajectory or jog runs); |following error| within
+    ``following_error_limit``; neither limit switch active; the setpoint (if given) within
+    the soft limits [min_position, max_position]."""
+    violations: list[Violation] = []
+    for name, config in axes.items():
+        fb = feedback.get(name)
+        if fb is None:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.NO_FEEDBACK,
+                    math.nan,
+                    math.nan,
+                    f"axis {name}: no feedback this period",
+                )
+            )
+            continue
+        unit = config.unit
+        if fb.faulted:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.DRIVE_FAULT,
+                    float(fb.fault_code),
+                    0.0,
+                    f"axis {name}: drive in {fb.power_state.value} (fault code "
+                    f"0x{fb.fault_code:04X})",
+                )
+            )
+        elif motion_active and not fb.enabled:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.NOT_ENABLED,
+                    float(fb.statusword),
+                    0.0,
+                    f"axis {name}: drive in {fb.power_state.value} while moving, "
+                    "operation enabled required",
+                )
+            )
+        if abs(fb.following_error) > config.following_error_limit:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.FOLLOWING_ERROR,
+                    fb.following_error,
+                    config.following_error_limit,
+                    f"axis {name}: following error {fb.following_error:.3f} {unit} exceeds "
+                    f"{config.following_error_limit:g} {unit}",
+                )
+            )
+        if fb.limit_positive:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.LIMIT_POSITIVE,
+                    fb.position,
+                    config.max_position,
+                    f"axis {name}: positive limit switch at {fb.position:.3f} {unit}",
+                )
+            )
+        if fb.limit_negative:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.LIMIT_NEGATIVE,
+                    fb.position,
+                    config.min_position,
+                    f"axis {name}: negative limit switch at {fb.position:.3f} {unit}",
+                )
+            )
+        if setpoint is not None and name in setpoint:
+            target = setpoint[name]
+            if not config.min_position <= target <= config.max_position:
+                bound = config.max_position if target > config.max_position else config.min_position
+                violations.append(
+                    Violation(
+                        name,
+                        ViolationKind.SOFT_LIMIT,
+                        target,
+                        bound,
+                        f"axis {name}: setpoint {target:.3f} {unit} outside the soft limits "
+                        f"{config.min_position:g} .. {config.max_position:g} {unit}",
+                    )
+                )
+    return violations

@@ -1,0 +1,217 @@
+"""The time-parameterised motion of one whole stave, from the tool path.
+
+What it does. The tool path (``app.geometry.toolpath``) is a chain of exact lines and arcs
+with a tilt. This module cuts the chain into rest-to-rest chunks wherever a move cannot be
+run through without stopping (a corner, a change between cutting and travel), and plans
+each chunk time-optimally (see ``chunk.py``):
+
+* a side (lead-in, P1..P4 or P5..P8, lead-out) is one tangent-continuous path, run from rest
+  to rest at the feed with jerk-limited ramps, without stopping at P2/P3/P6/P7; the
+  setpoints are exact points of the path, so the path is never left;
+* the arc's centripetal acceleration (and its jerk) is budgeted in the path limits, for the
+  feed at the highest override;
+* travel moves run as fast as the axis limits allow along their straight lines; where the
+  tool path changes the tilt on a travel move, Z is a second coordinate moving on its own
+  jerk-limited profile during the X-Y travel and arriving with it (overlap). The tool path
+  keeps travel moves out of its keep-out box, which is sized for the largest tilt of the
+  cycle, so every tilt in between is safe anywhere along those moves;
+* if the machine is not at the tool path's first point, a straight synchronised move there
+  is prepended (phase APPROACH).
+
+Phases: APPROACH until the first cutting piece, CUT_A, REPOSITION, CUT_B, RETURN.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+
+from app.geometry.segments import ArcSegment, Segment
+from app.geometry.toolpath import ToolPath
+from app.machine.planner.chunk import Chunk, make_chunk
+from app.machine.planner.chunked import ChunkedTrajectory
+from app.machine.planner.limits import MotionLimits
+from app.machine.planner.path import ArcPiece, FloatArray, LinePiece, Path, Piece
+from app.machine.planner.point_to_point import point_to_point_chunk
+from app.machine.planner.trajectory import Phase, PlannerError
+
+JOIN_TOLERANCE_MM = 1e-6
+"""Largest gap between one segment's end and the next one's start that is not an error."""
+
+_CUT_PHASES = {"A": Phase.CUT_A, "B": Phase.CUT_B}
+
+
+def _piece(segment: Segment) -> Piece:
+    if isinstance(segment, ArcSegment):
+        piece: Piece = ArcPiece.through(
+            segment.start,
+            segment.end,
+            segment.center,
+            segment.clockwise,
+            segment.cutting,
+            segment.side,
+        )
+        miss = math.dist(piece.point(piece.length_mm), segment.end)
+        if miss > JOIN_TOLERANCE_MM:
+            raise PlannerError(f"arc ending at {segment.end} does not close ({miss:.3g} mm)")
+        return piece
+    return LinePiece(segment.start, segment.end, segment.cutting, segment.side)
+
+
+def _tangents(segment: Segment) -> tuple[tuple[float, float], tuple[float, float]]:
+    if segment.length_mm == 0.0:
+        return (0.0, 0.0), (0.0, 0.0)
+    return segment.tangent_at(0.0), segment.tangent_at(segment.length_mm)
+
+
+def _joins(previous: Segment, segment: Segment) -> bool:
+    """True if ``segment`` continues ``previous`` without a stop between them."""
+    if previous.length_mm == 0.0 or segment.length_mm == 0.0:
+        return False
+    if previous.cutting != segment.cutting or previous.side != segment.side:
+        return False
+    if previous.cutting and previous.z_end_deg != segment.z_start_deg:
+        return False
+    if not previous.cutting and (
+        previous.z_start_deg != previous.z_end_deg or segment.z_start_deg != segment.z_end_deg
+    ):
+        return False  # a tilting travel move is a chunk of its own (Z is its second DOF)
+    a = _tangents(previous)[1]
+    b = _tangents(segment)[0]
+    turn = abs(math.atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]))
+    return turn <= Path.TANGENT_TOLERANCE_RAD
+
+
+class _PhaseTracker:
+    def __init__(self) -> None:
+        self.sides: list[str] = []
+
+    def phase(self, segment: Segment) -> Phase:
+        if segment.cutting:
+            if segment.side not in _CUT_PHASES:
+                raise PlannerError(
+                    f"a cutting segment has side = {segment.side!r}: allowed 'A' or 'B'"
+                )
+            if not self.sides or self.sides[-1] != segment.side:
+                if segment.side in self.sides:
+                    raise PlannerError(f"side {segment.side} is cut twice in one tool path")
+                self.sides.append(segment.side)
+            return _CUT_PHASES[segment.side]
+        if not self.sides:
+            return Phase.APPROACH
+        return Phase.REPOSITION if len(self.sides) == 1 else Phase.RETURN
+
+
+def _chunk(run: Sequence[Segment], phase: Phase, limits: MotionLimits) -> Chunk:
+    moving = [s for s in run if s.length_mm > 0.0]
+    path = Path(tuple(_piece(s) for s in moving)) if moving else None
+    z_start, z_end = run[0].z_start_deg, run[-1].z_end_deg
+    feed = limits.feed_mm_s if run[0].cutting else None
+    return make_chunk(phase, path, run[0].start, z_start, z_end, limits.x, limits.y, limits.z, feed)
+
+
+def _chunks(toolpath: ToolPath, start_xyz: Sequence[float], limits: MotionLimits) -> list[Chunk]:
+    segments = toolpath.segments
+    if not segments:
+        raise PlannerError("the tool path has no segments")
+    first = segments[0]
+    chunks: list[Chunk] = []
+    lead = point_to_point_chunk(
+        start_xyz, (*first.start, first.z_start_deg), limits, Phase.APPROACH
+    )
+    if lead is not None:
+        chunks.append(lead)
+    tracker = _PhaseTracker()
+    run: list[Segment] = []
+    run_phase = Phase.APPROACH
+    for index, segment in enumerate(segments):
+        if index:
+            previous = segments[index - 1]
+            gap = math.dist(previous.end, segment.start)
+            if gap > JOIN_TOLERANCE_MM or abs(previous.z_end_deg - segment.z_start_deg) > 1e-9:
+                raise PlannerError(
+                    f"tool path segment {index} does not start where segment "
+                    f"{index - 1} ends (gap {gap:.3g} mm)"
+                )
+        phase = tracker.phase(segment)
+        if run and _joins(run[-1], segment) and phase is run_phase:
+            run.append(segment)
+            continue
+        if run and (run[-1].length_mm > 0.0 or run[-1].z_start_deg != run[-1].z_end_deg):
+            chunks.append(_chunk(run, run_phase, limits))
+        run, run_phase = [segment], phase
+    if run[-1].length_mm > 0.0 or run[-1].z_start_deg != run[-1].z_end_deg:
+        chunks.append(_chunk(run, run_phase, limits))
+    return chunks
+
+
+class StavePlan(ChunkedTrajectory):
+    """The planned motion of one stave (a :class:`Trajectory`), with the exact tool path for
+    error measurement and the figures the cycle records."""
+
+    def __init__(
+        self, toolpath: ToolPath, start_xyz: Sequence[float], limits: MotionLimits
+    ) -> None:
+        self.toolpath = toolpath
+        self.limits = limits
+        super().__init__(_chunks(toolpath, start_xyz, limits))
+
+    def _side_chunks(self, side: str) -> list[Chunk]:
+        if side not in _CUT_PHASES:
+            raise ValueError(f"side = {side!r} is not allowed: 'A' or 'B'")
+        return [c.chunk for c in self.chunks if c.chunk.phase is _CUT_PHASES[side]]
+
+    def cut_time_s(self, side: str) -> float:
+        """Planned time (at 100 %) of one side, lead-in start to lead-out end, at rest at both
+        ends."""
+        self._side_chunks(side)
+        interval = self.phase_interval(_CUT_PHASES[side])
+        return 0.0 if interval is None else interval[1] - interval[0]
+
+    def cut_length_mm(self, side: str) -> float:
+        """Path length of one side, leads included."""
+        return sum(c.path.length_mm for c in self._side_chunks(side) if c.path is not None)
+
+    def cut_path(self, side: str) -> Path:
+        """The exact path of one side (lead-in to lead-out)."""
+        paths = [c.path for c in self._side_chunks(side) if c.path is not None]
+        if not paths:
+            raise PlannerError(f"the tool path has no side {side}")
+        return Path(tuple(p for path in paths for p in path.pieces))
+
+    def distance_to_path(self, x: float, y: float) -> float:
+        """Plan-view distance (mm) of a point to the nearest point of the whole tool path."""
+        return float(self.distances_to_path(np.array([x]), np.array([y]))[0])
+
+    def distances_to_path(self, x: FloatArray, y: FloatArray) -> FloatArray:
+        """Vectorised :meth:`distance_to_path`."""
+        result = np.full(np.shape(x), math.inf)
+        for segment in self.toolpath.segments:
+            if segment.length_mm > 0.0:
+                result = np.minimum(result, _piece(segment).distances(x, y))
+        return result
+
+    def curvature_step_times(self) -> tuple[float, ...]:
+        """Times (s, at 100 %) at which the path's curvature steps while moving (the line/arc
+        junctions P2, P3, P6, P7): the declared exceptions to the jerk limit."""
+        times = []
+        for planned in self.chunks:
+            chunk = planned.chunk
+            if chunk.path is None or chunk.s_dof is None:
+                continue
+            for s in chunk.path.curvature_steps():
+                t = planned.trajectory.get_first_time_at_position(0, s)
+                if t is not None:
+                    times.append(planned.t_start_s + float(t))
+        return tuple(sorted(times))
+
+
+def plan_stave(
+    toolpath: ToolPath, start_xyz: tuple[float, float, float], limits: MotionLimits
+) -> StavePlan:
+    """Plan the whole stave from rest at ``start_xyz`` to rest at the tool path's end (home).
+
+    Raises PlannerError (a ValueError) naming what is wrong if it cannot be planned."""
+    return StavePlan(toolpath, start_xyz, limits)
