@@ -57,6 +57,7 @@ from app.data.parameters import (
     parameter_spec,
     unknown_parameter,
 )
+from app.data.paths import default_database_path
 from app.data.recipe import Recipe, TiltMode, recipe_to_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.records import (
@@ -76,13 +77,21 @@ from app.data.users import DEFAULT_USERS, Role, User, check_pin_format, hash_pin
 from app.geometry.errors import FieldError
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
 from app.geometry.ratio import Ratio
+from app.resources import resource_path
+
+__all__ = [
+    "Database",
+    "default_database_path",
+    "sample_recipes_path",
+]
 
 _log = logging.getLogger(__name__)
 
-SAMPLE_RECIPES_PATH = (
-    Path(__file__).resolve().parents[2] / "resources" / "recipes" / ("sample_recipes.json")
-)
-"""Recipes a brand-new database starts with (the repository's ``resources/recipes``)."""
+
+def sample_recipes_path() -> Path:
+    """The recipes a brand-new database starts with (``resources/recipes``, see app.resources)."""
+    return resource_path("recipes", "sample_recipes.json")
+
 
 RECIPE_EDIT_ROLE = Role.OPERATOR
 """Creating, changing and copying recipes: production work, every operator may do it."""
@@ -194,12 +203,14 @@ class Database:
         limits: StaveLimits | None = None,
         clock: Callable[[], datetime] | None = None,
         busy_timeout_s: float = 10.0,
-        samples_path: Path | None = SAMPLE_RECIPES_PATH,
+        load_samples: bool = True,
+        samples_path: Path | None = None,
     ) -> Database:
         """Open (creating or migrating as needed) the database at ``path``.
 
         A brand-new database gets the schema, the default users, the default parameters and
-        the sample recipes of ``samples_path`` (None: no samples), all in one transaction.
+        (``load_samples``) the sample recipes of ``samples_path`` (None: the shipped ones), all
+        in one transaction.
         ``limits`` are the machine limits recipes are validated against; ``clock`` gives the
         time stamps (UTC now by default). Raises DatabaseOpenError (SchemaVersionError for a
         file from newer software) with the path and the reason.
@@ -226,7 +237,7 @@ class Database:
                 DEFAULT_LIMITS if limits is None else limits,
                 clock if clock is not None else (lambda: datetime.now(UTC)),
             )
-            database._prepare(samples_path)
+            database._prepare((samples_path or sample_recipes_path()) if load_samples else None)
         except sqlite3.DatabaseError as exc:
             connection.close()
             raise DatabaseOpenError(
@@ -299,18 +310,17 @@ class Database:
         return [spec.name for spec in PARAMETERS if spec.name not in stored]
 
     def _insert_missing_parameters(self, conn: sqlite3.Connection) -> None:
-        """Store the default of every catalogue parameter the file lacks, and log it."""
+        """Store the default of every catalogue parameter the file lacks.
+
+        Not logged as a change: nobody changed anything, and "no change logged yet" is how the
+        machine layer recognises a database nobody has tuned (it then applies the machine
+        configuration's factory values, which are logged).
+        """
         now = format_utc(self._clock())
         for name in self._missing_parameters():
-            value = DEFAULT_PARAMETERS[name]
             conn.execute(
                 "INSERT INTO parameters (name, value, updated_at, updated_by) VALUES (?, ?, ?, ?)",
-                (name, value, now, SYSTEM_USER),
-            )
-            conn.execute(
-                "INSERT INTO parameter_changes (time, name, old_value, new_value, user_name, "
-                "user_role) VALUES (?, ?, NULL, ?, ?, ?)",
-                (now, name, value, SYSTEM_USER, SYSTEM_USER),
+                (name, DEFAULT_PARAMETERS[name], now, SYSTEM_USER),
             )
 
     def close(self) -> None:

@@ -96,6 +96,7 @@ PARAMETERS: tuple[ParameterSpec, ...] = (
     ParameterSpec("xy_jerk_mm_s3", "mm/s³", "motion", 10, 1e6, 20000, "X-Y jerk limit", _S),
     ParameterSpec("z_speed_deg_s", "deg/s", "motion", 0.1, 360, 30, "Tilt (Z) speed", _T),
     ParameterSpec("z_accel_deg_s2", "deg/s²", "motion", 1, 5000, 200, "Tilt (Z) acceleration", _S),
+    ParameterSpec("z_jerk_deg_s3", "deg/s³", "motion", 10, 1e6, 2000, "Tilt (Z) jerk limit", _S),
     # --- tool path ---------------------------------------------------------------------------
     ParameterSpec(
         "lead_mm",
