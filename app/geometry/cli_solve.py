@@ -12,27 +12,31 @@ The lead wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it 
 (`python -m app.geometry.cli_solve ...`). Numbers are read as text and converted here, so that
 a bad number is reported with the field's name and range like every other invalid input.
 
-Process parameters (tool radius, machine height, start position P0, lead, tilt clearance,
-home) come from `--config` through `load_machine_settings`, the one function to adapt to
-`app.config`; flags override them; without either the documented defaults below apply.
+Process parameters (tool radius, machine height, start position P0, lead, tilt clearance)
+and the axis travel and home position come from `--config FILE` (the machine TOML read by
+`app.config.load_config`) through `load_machine_settings`, the one function that knows where
+they come from; --tool-radius and --machine-height override them; without a config file the
+documented defaults below apply.
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
 import json
 import math
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
 from app.geometry.profile import StaveProfile, solve_profile
 from app.geometry.ratio import Ratio
 from app.geometry.toolpath import ArcSegment, ToolPath, ToolPathParams, build_toolpath
+
+if TYPE_CHECKING:
+    from app.config import MachineConfig
 
 EXIT_OK = 0
 EXIT_INVALID_INPUT = 2
@@ -55,9 +59,11 @@ PROCESS_DEFAULTS: Mapping[str, float] = {
     "home_z_deg": 0.0,
 }
 
-LIMIT_KEYS = tuple(StaveLimits.__dataclass_fields__)
-
-_CONFIG_SECTIONS = ("process", "system", "machine", "geometry", "toolpath", "limits", "axes")
+_AXIS_KEYS = (
+    ("X", "x_min_mm", "x_max_mm", "home_x_mm"),
+    ("Y", "y_min_mm", "y_max_mm", "home_y_mm"),
+    ("Z", "z_min_deg", "z_max_deg", "home_z_deg"),
+)
 
 
 class CliInputError(Exception):
@@ -72,69 +78,45 @@ class MachineSettings:
     limits: StaveLimits
 
 
-def _find(config: object, key: str) -> object | None:
-    """`key` on the config object or mapping, or in one of its usual sections."""
-    holders: list[object] = [config]
-    for section in _CONFIG_SECTIONS:
-        sub = config.get(section) if isinstance(config, Mapping) else getattr(config, section, None)
-        if sub is not None:
-            holders.append(sub)
-    for holder in holders:
-        value: object = (
-            holder.get(key) if isinstance(holder, Mapping) else getattr(holder, key, None)
-        )
-        if value is not None:
-            return value
-    return None
-
-
 def load_machine_settings(config_path: str | None) -> MachineSettings:
-    """Read the process parameters and limits; the single place that knows `app.config`.
+    """The process parameters and limits: the one place that knows where they come from.
 
-    Uses `app.config.load_config(path)` when that module exists, looking each parameter up
-    by its name (tool_radius_mm, machine_height_mm, start_x_mm, ..., x_min_mm, ...) on the
-    returned object or mapping or one of its sections (process, system, machine, ...); missing
-    ones keep their defaults. Without `app.config`, `--config` is ignored with a note.
+    Without a path: the defaults of this module. With one: `app.config.load_config(path)`
+    (imported only then, so a plain `stave solve` reads no file), converted by
+    `settings_from_config`; a file that cannot be read or is invalid is a CliInputError.
     """
-    process = dict(PROCESS_DEFAULTS)
     if config_path is None:
-        return MachineSettings(process=process, limits=StaveLimits())
+        return MachineSettings(process=dict(PROCESS_DEFAULTS), limits=StaveLimits())
+    from app.config import load_config  # the file reader, only when a file is asked for
+
     try:
-        config_module = importlib.import_module("app.config")
-    except ModuleNotFoundError as exc:
-        if exc.name != "app.config":
-            raise
-        print(
-            "stave solve: note: app.config is not available; --config ignored, "
-            "built-in defaults used",
-            file=sys.stderr,
-        )
-        return MachineSettings(process=process, limits=StaveLimits())
-    try:
-        config = config_module.load_config(config_path)
+        config = load_config(config_path)
     except Exception as exc:  # any failure to read the file is the user's input error
-        raise CliInputError(f"--config {config_path}: {exc}".replace("\n", " ")) from exc
+        raise CliInputError(str(exc).replace("\n", " ")) from exc
     return settings_from_config(config)
 
 
-def settings_from_config(config: object) -> MachineSettings:
-    """Process parameters and limits found by name in an already loaded configuration.
+def settings_from_config(config: MachineConfig) -> MachineSettings:
+    """Process parameters and axis travel from a loaded machine configuration.
 
-    `config` may be a mapping or an object with attributes; each name (tool_radius_mm, ...,
-    x_min_mm, ...) is looked up on it and then in its sections (process, system, machine,
-    geometry, toolpath, limits, axes). Names not found keep their defaults.
+    Takes the factory process values of `[process]` (the database may hold newer ones; the
+    machine layer passes those), the home position and the soft limits of `[axes.X/Y/Z]`.
+    Values the configuration lacks keep this module's defaults.
     """
     process = dict(PROCESS_DEFAULTS)
     for key in process:
-        found = _find(config, key)
-        if found is not None:
-            process[key] = _parse_float(f"{key} (config)", str(found), "a finite number")
-    limit_values: dict[str, float] = {}
-    for key in LIMIT_KEYS:
-        found = _find(config, key)
-        if found is not None:
-            limit_values[key] = _parse_float(f"{key} (config)", str(found), "a finite number")
-    return MachineSettings(process=process, limits=replace(StaveLimits(), **limit_values))
+        value = getattr(config.process, key, None)
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            process[key] = float(value)
+    travel: dict[str, float] = {}
+    for axis_name, min_key, max_key, home_key in _AXIS_KEYS:
+        axis = config.axes.get(axis_name)
+        if axis is None:
+            continue
+        travel[min_key] = float(axis.min_position)
+        travel[max_key] = float(axis.max_position)
+        process[home_key] = float(axis.home_position)
+    return MachineSettings(process=process, limits=replace(StaveLimits(), **travel))
 
 
 def _parse_float(field: str, text: str, allowed: str) -> float:

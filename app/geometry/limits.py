@@ -287,9 +287,11 @@ def validate_stave(
     """
     limits = DEFAULT_LIMITS if limits is None else limits
     errors: list[FieldError] = []
-    length = _check_length(length_mm, limits, errors)
+    # lambda < 1/2 always leaves B = L/2 - lambda*L > 0 in IEEE arithmetic: lambda*L rounds
+    # to at most the float just below L/2, never up to it.
+    _check_length(length_mm, limits, errors)
     width = _check_width(width_mm, limits, errors)
-    lam = _check_length_ratio(length_ratio, errors)
+    _check_length_ratio(length_ratio, errors)
     k = _check_width_ratio(width_ratio, errors)
     thickness = None if thickness_mm is None else _check_thickness(thickness_mm, limits, errors)
     tilt = None if tilt_deg is None else _check_tilt(tilt_deg, limits, errors)
@@ -304,12 +306,6 @@ def validate_stave(
             )
             errors.append(out_of_range("head_width_mm", head_width, allowed, note))
             head_width = None
-
-    if length is not None and lam is not None and length / 2.0 - lam * length <= 0.0:
-        # lambda < 1/2 but so close that no arc survives the rounding of L/2 - lambda*L.
-        errors.append(
-            out_of_range("length_ratio", length_ratio, "0 <= length ratio < 1/2", "no arc is left")
-        )
 
     if width is not None and tilt is not None:
         _check_barrel_diameter(width, tilt, limits, errors)

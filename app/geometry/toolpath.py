@@ -260,6 +260,10 @@ class KeepOutBox:
     y_min: float
     y_max: float
 
+    def moved(self, dx: float, dy: float) -> KeepOutBox:
+        """The same box translated (e.g. by P0 into machine coordinates)."""
+        return KeepOutBox(self.x_min + dx, self.x_max + dx, self.y_min + dy, self.y_max + dy)
+
     def contains(self, point: Point) -> bool:
         return self.x_min < point[0] < self.x_max and self.y_min < point[1] < self.y_max
 
@@ -303,7 +307,8 @@ def _route(left: Point, other: Point, box: KeepOutBox, margin_mm: float) -> list
     if other[1] >= box.y_max or other[1] <= box.y_min:
         return [left, (left[0], other[1]), other]
     # `other` is level with the board and beyond its right end: go round on `left`'s side.
-    side_y = box.y_max + margin_mm if left[1] >= 0.0 else box.y_min - margin_mm
+    above = left[1] >= (box.y_min + box.y_max) / 2.0
+    side_y = box.y_max + margin_mm if above else box.y_min - margin_mm
     return [left, (left[0], side_y), (other[0], side_y), other]
 
 
@@ -407,43 +412,43 @@ def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMe
     errors = validate_toolpath_params(params)
     if errors:
         raise GeometryError(errors)
-    box = keep_out_box(profile, params)
     x0, y0 = float(params.start_x_mm), float(params.start_y_mm)
-    home = (float(params.home_x_mm) - x0, float(params.home_y_mm) - y0)
-    if box.contains(home):
+    box = keep_out_box(profile, params)
+    if box.contains((float(params.home_x_mm) - x0, float(params.home_y_mm) - y0)):
         raise GeometryError([_home_error(params, box)])
-
-    offset = params.effective_radius_mm
+    # From here on everything is in machine coordinates, and the travel moves start and end
+    # at the very points the cutting moves computed, so the path has no gaps, not even 1 ulp.
+    box = box.moved(x0, y0)
+    home = (float(params.home_x_mm), float(params.home_y_mm))
     shift = params.pivot_shift_mm
     alpha = params.tilt_deg
-    cut_a = compensated_side(profile, "A", offset, params.lead_mm, method)
-    cut_b = compensated_side(profile, "B", offset, params.lead_mm, method)
-    # Pivot positions (profile frame) of the ends of each side's cut.
-    start_a = _moved(cut_a.lead_in_start, 0.0, -shift)
-    end_a = _moved(cut_a.lead_out_end, 0.0, -shift)
-    start_b = _moved(cut_b.lead_in_start, 0.0, shift)
-    end_b = _moved(cut_b.lead_out_end, 0.0, shift)
+    cut_a = _cut_segments(
+        compensated_side(profile, "A", params.effective_radius_mm, params.lead_mm, method),
+        x0,
+        y0 - shift,
+        alpha,
+    )
+    cut_b = _cut_segments(
+        compensated_side(profile, "B", params.effective_radius_mm, params.lead_mm, method),
+        x0,
+        y0 + shift,
+        -alpha,
+    )
+    start_a, end_a = cut_a[0].start, cut_a[-1].end
+    start_b, end_b = cut_b[0].start, cut_b[-1].end
 
     margin = params.tilt_clearance_mm
-    tilt_x = max(profile.length_mm + params.tool_radius_mm + margin, end_a[0], start_b[0])
-
-    def machine(points: list[Point]) -> list[Point]:
-        return [_moved(point, x0, y0) for point in points]
-
-    approach = list(reversed(_route(start_a, home, box, margin)))
-    leave_a = [end_a, (tilt_x, end_a[1])]
-    cross = [(tilt_x, end_a[1]), (tilt_x, start_b[1])]
-    enter_b = [(tilt_x, start_b[1]), start_b]
-    go_home = _route(end_b, home, box, margin)
-
+    tilt_x = max(x0 + profile.length_mm + params.tool_radius_mm + margin, end_a[0], start_b[0])
     segments: list[Segment] = []
-    segments += _travel(machine(approach), params.home_z_deg, alpha)
-    segments += _cut_segments(cut_a, x0, y0 - shift, alpha)
-    segments += _travel(machine(leave_a), alpha, alpha)
-    segments += _travel(machine(cross), alpha, -alpha)
-    segments += _travel(machine(enter_b), -alpha, -alpha)
-    segments += _cut_segments(cut_b, x0, y0 + shift, -alpha)
-    segments += _travel(machine(go_home), -alpha, params.home_z_deg)
+    segments += _travel(
+        list(reversed(_route(start_a, home, box, margin))), params.home_z_deg, alpha
+    )
+    segments += cut_a
+    segments += _travel([end_a, (tilt_x, end_a[1])], alpha, alpha)
+    segments += _travel([(tilt_x, end_a[1]), (tilt_x, start_b[1])], alpha, -alpha)
+    segments += _travel([(tilt_x, start_b[1]), start_b], -alpha, -alpha)
+    segments += cut_b
+    segments += _travel(_route(end_b, home, box, margin), -alpha, params.home_z_deg)
     return ToolPath(segments=tuple(segments), params=params, profile=profile)
 
 
