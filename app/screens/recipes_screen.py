@@ -1,0 +1,803 @@
+"""Recipes screen: the list, the editor with a keypad for every value, and a live preview.
+
+Why edit a draft and save explicitly: a recipe may be the one the machine is cutting; half an
+edit must never reach it. Every keypad shows the allowed range and refuses a value the
+recipe's validation refuses for that field (the same validation the database applies); what
+depends on other fields is shown under the field at once, so nothing surprises at Save.
+The preview solves the draft for a chosen board width with the machine's own geometry.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import replace
+from datetime import datetime
+from pathlib import Path
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QButtonGroup,
+    QFrame,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QScroller,
+    QSizePolicy,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.data.errors import DataError, FieldValidationError
+from app.data.exchange import export_recipes, import_recipes
+from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, Recipe, TiltMode
+from app.data.users import Role
+from app.geometry.errors import FieldError
+from app.geometry.limits import StaveLimits
+from app.geometry.ratio import Ratio
+from app.machine.commands import SelectRecipe
+from app.machine.snapshot import MachineSnapshot
+from app.screens.base import Screen, ScreenContext, refusal
+from app.screens.formatting import format_number, format_optional
+from app.screens.recipe_preview import RecipePreview, preview_recipe
+from app.screens.theme import set_style_property
+from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
+from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
+from app.screens.widgets.keyboard import TextKeyboard
+from app.screens.widgets.keypad import FractionKeypad, NumberKeypad
+from app.screens.widgets.plan_view import PlanView
+from app.screens.widgets.readouts import set_text, styled_label
+
+DEFAULT_PREVIEW_WIDTH_MM = 150.0
+NUMBER_FIELDS = (
+    "length_mm",
+    "thickness_mm",
+    "tilt_deg",
+    "barrel_diameter_mm",
+    "barrel_perimeter_mm",
+)
+FIELDS = (
+    "name",
+    "length_mm",
+    "thickness_mm",
+    "length_ratio",
+    "width_ratio",
+    "tilt_mode",
+    "tilt_deg",
+    "barrel_diameter_mm",
+    "barrel_perimeter_mm",
+    "note",
+)
+
+
+def _button(name: str, kind: str = "") -> QPushButton:
+    button = QPushButton()
+    button.setObjectName(name)
+    if kind:
+        button.setProperty("kind", kind)
+    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+    return button
+
+
+def new_recipe_template(name: str) -> Recipe:
+    """The values a new recipe starts from (a common 950 mm wine-barrel stave)."""
+    return Recipe(
+        id=None,
+        name=name,
+        length_mm=950.0,
+        thickness_mm=27.0,
+        length_ratio=Ratio(1, 4),
+        width_ratio=Ratio(3, 4),
+        tilt_mode=TiltMode.FIXED,
+        tilt_deg=7.5,
+        barrel_diameter_mm=None,
+        barrel_perimeter_mm=None,
+    )
+
+
+def field_errors(recipe: Recipe, limits: StaveLimits) -> dict[str, list[FieldError]]:
+    """The recipe's validation errors grouped by field."""
+    grouped: dict[str, list[FieldError]] = {}
+    for error in recipe.validate(limits):
+        grouped.setdefault(error.field, []).append(error)
+    return grouped
+
+
+class RecipesScreen(Screen):
+    key = "recipes"
+
+    def __init__(self, context: ScreenContext, parent: QWidget | None = None) -> None:
+        super().__init__(context, parent)
+        self.limits = context.database.limits
+        self.recipes: list[Recipe] = []
+        self.current: Recipe | None = None
+        self.draft: Recipe | None = None
+        self.preview_width_mm = DEFAULT_PREVIEW_WIDTH_MM
+        self.preview: RecipePreview | None = None
+        self.parameters: dict[str, float] = context.database.get_parameters()
+        self.errors: dict[str, list[FieldError]] = {}
+
+        # -- list ---------------------------------------------------------------------------
+        self.list_title = styled_label("", "title")
+        self.recipe_list = QListWidget()
+        self.recipe_list.setObjectName("recipeList")
+        self.recipe_list.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.recipe_list.itemClicked.connect(self._list_clicked)
+        QScroller.grabGesture(
+            self.recipe_list.viewport(), QScroller.ScrollerGestureType.TouchGesture
+        )
+        self.new_button = _button("newRecipe")
+        self.copy_button = _button("copyRecipe")
+        self.delete_button = _button("deleteRecipe", "danger")
+        self.import_button = _button("importRecipes")
+        self.export_button = _button("exportRecipes")
+        self.new_button.clicked.connect(self.new_recipe)
+        self.copy_button.clicked.connect(self.copy_recipe)
+        self.delete_button.clicked.connect(self.delete_recipe)
+        self.import_button.clicked.connect(self.import_recipes)
+        self.export_button.clicked.connect(self.export_recipes)
+        list_buttons = QGridLayout()
+        list_buttons.setSpacing(6)
+        list_buttons.addWidget(self.new_button, 0, 0)
+        list_buttons.addWidget(self.copy_button, 0, 1)
+        list_buttons.addWidget(self.delete_button, 1, 0, 1, 2)
+        list_buttons.addWidget(self.import_button, 2, 0)
+        list_buttons.addWidget(self.export_button, 2, 1)
+        list_layout = QVBoxLayout()
+        list_layout.addWidget(self.list_title)
+        list_layout.addWidget(self.recipe_list, 1)
+        list_layout.addLayout(list_buttons)
+        self.list_widget = QWidget()
+        self.list_widget.setLayout(list_layout)
+        self.list_widget.setFixedWidth(250)
+
+        # -- editor ----------------------------------------------------------------------------
+        editor = QFrame()
+        editor.setObjectName("panel")
+        self.editor_title = styled_label("", "title", "editorTitle")
+        grid = QGridLayout()
+        grid.setHorizontalSpacing(8)
+        grid.setVerticalSpacing(2)
+        self.field_labels: dict[str, QLabel] = {}
+        self.range_labels: dict[str, QLabel] = {}
+        self.field_buttons: dict[str, QPushButton] = {}
+        self.error_labels: dict[str, QLabel] = {}
+        row = 0
+        for name in FIELDS:
+            label = styled_label("", "value")
+            label.setStyleSheet("font-weight: normal;")
+            caption = styled_label("", "caption", f"range_{name}")
+            labels = QVBoxLayout()
+            labels.setSpacing(0)
+            labels.addWidget(label)
+            labels.addWidget(caption)
+            grid.addLayout(labels, row, 0)
+            if name == "tilt_mode":
+                self.fixed_button = _button("tiltFixed")
+                self.barrel_button = _button("tiltBarrel")
+                group = QButtonGroup(self)
+                mode_row = QHBoxLayout()
+                for button, mode in (
+                    (self.fixed_button, TiltMode.FIXED),
+                    (self.barrel_button, TiltMode.BARREL),
+                ):
+                    button.setCheckable(True)
+                    group.addButton(button)
+                    button.clicked.connect(lambda _=False, m=mode: self.set_field("tilt_mode", m))
+                    mode_row.addWidget(button)
+                grid.addLayout(mode_row, row, 1)
+            else:
+                button = _button(f"field_{name}", "field")
+                button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
+                button.setMinimumWidth(200)
+                grid.addWidget(button, row, 1)
+                self.field_buttons[name] = button
+            error = styled_label("", "error", f"error_{name}")
+            error.setWordWrap(True)
+            error.setVisible(False)
+            grid.addWidget(error, row + 1, 0, 1, 2)
+            self.field_labels[name] = label
+            self.range_labels[name] = caption
+            self.error_labels[name] = error
+            row += 2
+        grid.setColumnStretch(1, 1)
+        self.save_button = _button("saveRecipe", "primary")
+        self.discard_button = _button("discardRecipe")
+        self.use_button = _button("useRecipe")
+        self.save_button.clicked.connect(self.save)
+        self.discard_button.clicked.connect(self.discard)
+        self.use_button.clicked.connect(self.use_on_machine)
+        actions = QHBoxLayout()
+        actions.addWidget(self.save_button)
+        actions.addWidget(self.discard_button)
+        actions.addWidget(self.use_button)
+        editor_layout = QVBoxLayout(editor)
+        editor_layout.setContentsMargins(10, 6, 10, 8)
+        editor_layout.addWidget(self.editor_title)
+        editor_layout.addLayout(grid)
+        editor_layout.addStretch(1)
+        editor_layout.addLayout(actions)
+
+        # -- preview ---------------------------------------------------------------------------
+        preview_panel = QFrame()
+        preview_panel.setObjectName("panel")
+        self.preview_title = styled_label("", "title")
+        self.width_button = _button("previewWidth", "field")
+        self.width_button.clicked.connect(self.edit_preview_width)
+        self.width_caption = styled_label("", "caption")
+        self.plan_view = PlanView(show_cutter=False)
+        self.plan_view.setMinimumSize(260, 160)
+        self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
+        self.result_labels: dict[str, QLabel] = {}
+        results = QGridLayout()
+        results.setVerticalSpacing(0)
+        for index, key in enumerate(("head", "d", "r", "tilt")):
+            caption = styled_label("", "caption")
+            value = styled_label("—", "value", f"preview_{key}")
+            results.addWidget(caption, 0, index)
+            results.addWidget(value, 1, index)
+            self.result_labels[key] = value
+            self.result_labels[key + "_caption"] = caption
+        self.preview_errors = styled_label("", "error", "previewErrors")
+        self.preview_errors.setWordWrap(True)
+        preview_layout = QVBoxLayout(preview_panel)
+        preview_layout.setContentsMargins(10, 6, 10, 8)
+        preview_layout.addWidget(self.preview_title)
+        preview_layout.addWidget(self.width_caption)
+        preview_layout.addWidget(self.width_button)
+        preview_layout.addWidget(self.plan_view, 1)
+        preview_layout.addLayout(results)
+        preview_layout.addWidget(self.preview_errors)
+
+        layout = QHBoxLayout(self)
+        layout.setContentsMargins(8, 8, 8, 8)
+        layout.setSpacing(8)
+        layout.addWidget(self.list_widget)
+        layout.addWidget(editor, 5)
+        layout.addWidget(preview_panel, 4)
+        self.retranslate()
+        self.reload()
+
+    # -- texts ----------------------------------------------------------------------------------
+
+    def title(self) -> str:
+        return self.tr("Recipes")
+
+    def field_title(self, name: str) -> str:
+        titles = {
+            "name": self.tr("Name"),
+            "length_mm": self.tr("Length L"),
+            "thickness_mm": self.tr("Thickness H"),
+            "length_ratio": self.tr("Length ratio L1 : L"),
+            "width_ratio": self.tr("Width ratio W1 : W"),
+            "tilt_mode": self.tr("Tilt"),
+            "tilt_deg": self.tr("Tilt α"),
+            "barrel_diameter_mm": self.tr("Barrel diameter"),
+            "barrel_perimeter_mm": self.tr("Barrel perimeter"),
+            "note": self.tr("Note"),
+        }
+        return titles[name]
+
+    def field_range(self, name: str) -> tuple[float, float, str]:
+        """(minimum, maximum, unit) of a number field, from the machine's limits."""
+        limits = self.limits
+        d_low = limits.min_barrel_diameter_mm or 1.0
+        d_high = limits.max_barrel_diameter_mm or 100_000.0
+        ranges = {
+            "length_mm": (limits.min_length_mm, limits.max_length_mm, "mm"),
+            "thickness_mm": (limits.min_thickness_mm, limits.max_thickness_mm, "mm"),
+            "tilt_deg": (limits.min_tilt_deg, limits.max_tilt_deg, "°"),
+            "barrel_diameter_mm": (d_low, d_high, "mm"),
+            "barrel_perimeter_mm": (round(math.pi * d_low, 1), round(math.pi * d_high, 1), "mm"),
+        }
+        return ranges[name]
+
+    def range_text(self, name: str) -> str:
+        if name in NUMBER_FIELDS:
+            low, high, unit = self.field_range(name)
+            text = f"{format_number(low)} … {format_number(high)} {unit}"
+            if name in ("barrel_diameter_mm", "barrel_perimeter_mm"):
+                text += " " + self.tr("(optional)")
+            return text
+        if name == "length_ratio":
+            return self.tr("0 to below 1/2")
+        if name == "width_ratio":
+            return self.tr("above 0, below 1")
+        if name == "name":
+            return self.tr("1 to %1 characters").replace("%1", str(NAME_MAX_CHARS))
+        if name == "note":
+            return self.tr("optional")
+        if name == "tilt_mode":
+            return self.tr("fixed, or from the barrel")
+        return ""
+
+    def retranslate(self) -> None:
+        self.list_title.setText(self.tr("Recipes"))
+        self.new_button.setText(self.tr("New"))
+        self.copy_button.setText(self.tr("Copy"))
+        self.delete_button.setText(self.tr("Delete"))
+        self.import_button.setText(self.tr("Import"))
+        self.export_button.setText(self.tr("Export"))
+        self.save_button.setText(self.tr("Save"))
+        self.discard_button.setText(self.tr("Discard"))
+        self.use_button.setText(self.tr("Use on machine"))
+        self.fixed_button.setText(self.tr("Fixed"))
+        self.barrel_button.setText(self.tr("From barrel"))
+        self.preview_title.setText(self.tr("Preview"))
+        self.width_caption.setText(self.tr("Board width for the preview"))
+        captions = {
+            "head": self.tr("Head W1"),
+            "d": self.tr("Rise D"),
+            "r": self.tr("Radius R"),
+            "tilt": self.tr("Tilt"),
+        }
+        for key, text in captions.items():
+            self.result_labels[key + "_caption"].setText(text)
+        for name in FIELDS:
+            self.field_labels[name].setText(self.field_title(name))
+            self.range_labels[name].setText(self.range_text(name))
+        self.show_draft()
+
+    # -- list ------------------------------------------------------------------------------------
+
+    def reload(self, select_id: int | None = None) -> None:
+        """Read the recipes again and select ``select_id`` (or keep the current one)."""
+        self.recipes = self.context.database.list_recipes()
+        keep = (
+            select_id
+            if select_id is not None
+            else (self.current.id if self.current is not None else None)
+        )
+        self.recipe_list.clear()
+        for recipe in self.recipes:
+            item = QListWidgetItem(f"{recipe.id}  {recipe.name}")
+            item.setData(Qt.ItemDataRole.UserRole, recipe.id)
+            self.recipe_list.addItem(item)
+        target = next((r for r in self.recipes if r.id == keep), None)
+        if target is None and self.recipes and self.draft is None:
+            loaded = self.snapshot.recipe_id if self.snapshot is not None else None
+            target = next((r for r in self.recipes if r.id == loaded), self.recipes[0])
+        if target is not None:
+            self.load(target)
+        elif self.current is not None and self.current.id is not None:
+            # The recipe being shown was deleted.
+            self.current = None
+            self.draft = None
+            self.show_draft()
+
+    def _row_of(self, recipe_id: int | None) -> int:
+        for row in range(self.recipe_list.count()):
+            if self.recipe_list.item(row).data(Qt.ItemDataRole.UserRole) == recipe_id:
+                return row
+        return -1
+
+    def _list_clicked(self, item: QListWidgetItem) -> None:
+        recipe_id = item.data(Qt.ItemDataRole.UserRole)
+        recipe = next((r for r in self.recipes if r.id == recipe_id), None)
+        if recipe is None or (self.current is not None and recipe.id == self.current.id):
+            return
+        self.after_discard_confirmed(lambda: self.load(recipe))
+
+    def select_recipe(self, recipe_id: int) -> None:
+        """Show the recipe with this id in the editor (as a tap on the list does)."""
+        row = self._row_of(recipe_id)
+        if row < 0:
+            raise ValueError(f"recipe id {recipe_id} is not in the list")
+        self._list_clicked(self.recipe_list.item(row))
+
+    def load(self, recipe: Recipe) -> None:
+        self.current = recipe
+        self.draft = recipe
+        row = self._row_of(recipe.id)
+        if row >= 0:
+            self.recipe_list.setCurrentRow(row)
+        self.update_preview()
+        self.show_draft()
+
+    @property
+    def dirty(self) -> bool:
+        return self.draft is not None and self.draft != self.current
+
+    def after_discard_confirmed(self, action: Callable[[], None]) -> None:
+        """Run ``action`` now, or after the user agreed to lose unsaved changes."""
+        if not self.dirty:
+            action()
+            return
+        overlay = ConfirmOverlay(
+            self.tr("Unsaved changes"),
+            self.tr("Discard the changes to %1?").replace(
+                "%1", self.draft.name if self.draft else ""
+            ),
+            self.tr("Discard"),
+            danger=True,
+        )
+        overlay.finished.connect(lambda ok: action() if ok else self._reselect_current())
+        self.context.open(overlay)
+
+    def _reselect_current(self) -> None:
+        if self.current is not None:
+            row = self._row_of(self.current.id)
+            if row >= 0:
+                self.recipe_list.setCurrentRow(row)
+
+    # -- editing ----------------------------------------------------------------------------
+
+    def edit_field(self, name: str) -> None:
+        """Open the keypad (or keyboard) for one field of the draft."""
+        draft = self.draft
+        if draft is None:
+            return
+        title = self.field_title(name)
+        if name in ("name", "note"):
+            keyboard = TextKeyboard(
+                title,
+                str(getattr(draft, name)),
+                max_length=NAME_MAX_CHARS if name == "name" else NOTE_MAX_CHARS,
+                layout=self.context.keyboard_layout(),
+                check=lambda text, n=name: self._check(n, text),
+            )
+            keyboard.textAccepted.connect(lambda text, n=name: self.set_field(n, text))
+            self.context.open(keyboard)
+        elif name in ("length_ratio", "width_ratio"):
+            ratio: Ratio = getattr(draft, name)
+            keypad = FractionKeypad(
+                title,
+                ratio.numerator,
+                ratio.denominator,
+                self.range_text(name),
+                check=lambda num, den, n=name: self._check(n, Ratio(num, den)),
+            )
+            keypad.fractionAccepted.connect(
+                lambda num, den, n=name: self.set_field(n, Ratio(num, den))
+            )
+            self.context.open(keypad)
+        elif name in NUMBER_FIELDS:
+            low, high, unit = self.field_range(name)
+            optional = name in ("barrel_diameter_mm", "barrel_perimeter_mm")
+            keypad_number = NumberKeypad(
+                title,
+                getattr(draft, name),
+                low,
+                high,
+                unit,
+                decimals=3,
+                optional=optional,
+                check=lambda value, n=name: self._check(n, value),
+            )
+            keypad_number.valueAccepted.connect(lambda value, n=name: self.set_field(n, value))
+            keypad_number.cleared.connect(lambda n=name: self.set_field(n, None))
+            self.context.open(keypad_number)
+
+    def _check(self, name: str, value: object) -> str:
+        """The message refusing ``value`` for field ``name`` ("" when it is acceptable): the
+        recipe's validation run on the draft with that value, errors of that field only."""
+        if self.draft is None:
+            return ""
+        candidate = replace(self.draft, **{name: value})
+        problems = field_errors(candidate, self.limits).get(name, [])
+        if name == "name" and isinstance(value, str):
+            clash = self.context.database.get_recipe_by_name(value)
+            if clash is not None and clash.id != self.draft.id:
+                return (
+                    self.tr("The name %1 is already used by recipe %2.")
+                    .replace("%1", value)
+                    .replace("%2", str(clash.id))
+                )
+        return "\n".join(p.message for p in problems)
+
+    def set_field(self, name: str, value: object) -> None:
+        if self.draft is None:
+            return
+        self.draft = replace(self.draft, **{name: value})
+        self.update_preview()
+        self.show_draft()
+
+    def show_draft(self) -> None:
+        """Put the draft's values, the inline errors and the button states on screen."""
+        draft = self.draft
+        editing = draft is not None
+        for button in self.field_buttons.values():
+            button.setEnabled(editing)
+        self.fixed_button.setEnabled(editing)
+        self.barrel_button.setEnabled(editing)
+        if draft is None:
+            set_text(self.editor_title, self.tr("No recipe"))
+            for button in self.field_buttons.values():
+                button.setText("")
+            for label in self.error_labels.values():
+                label.setVisible(False)
+            self._update_buttons()
+            return
+        title = (
+            self.tr("New recipe")
+            if draft.id is None
+            else self.tr("Recipe %1").replace("%1", str(draft.id))
+        )
+        if self.dirty:
+            title += "  " + self.tr("(changed, not saved)")
+        set_text(self.editor_title, title)
+        values = {
+            "name": draft.name,
+            "length_mm": f"{format_number(draft.length_mm)} mm",
+            "thickness_mm": f"{format_number(draft.thickness_mm)} mm",
+            "length_ratio": f"{draft.length_ratio}  = {draft.length_ratio.value:.4f}",
+            "width_ratio": f"{draft.width_ratio}  = {draft.width_ratio.value:.4f}",
+            "tilt_deg": f"{format_number(draft.tilt_deg)} °",
+            "barrel_diameter_mm": format_optional(draft.barrel_diameter_mm, 1, "mm"),
+            "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
+            "note": draft.note or "—",
+        }
+        for name, text in values.items():
+            set_text(self.field_buttons[name], text)
+        self.fixed_button.setChecked(draft.tilt_mode is TiltMode.FIXED)
+        self.barrel_button.setChecked(draft.tilt_mode is TiltMode.BARREL)
+        self.errors = field_errors(draft, self.limits)
+        for name in FIELDS:
+            problems = self.errors.get(name, [])
+            label = self.error_labels[name]
+            set_text(label, "\n".join(p.message for p in problems))
+            label.setVisible(bool(problems))
+            button = self.field_buttons.get(name)
+            if button is not None:
+                set_style_property(button, "invalid", "true" if problems else "false")
+                changed = self.current is not None and getattr(draft, name) != getattr(
+                    self.current, name
+                )
+                set_style_property(
+                    button, "changed", "true" if changed and not problems else "false"
+                )
+        self._update_buttons()
+
+    def _update_buttons(self) -> None:
+        has_current = self.current is not None and self.current.id is not None
+        self.copy_button.setEnabled(has_current)
+        self.delete_button.setEnabled(has_current)
+        self.save_button.setEnabled(self.dirty)
+        self.discard_button.setEnabled(self.dirty)
+        reason = refusal(self.snapshot, "SelectRecipe") if self.snapshot is not None else ""
+        can_use = has_current and not self.dirty and not reason
+        self.use_button.setEnabled(can_use)
+        self.use_button.setToolTip(reason)
+
+    # -- preview ---------------------------------------------------------------------------
+
+    def edit_preview_width(self) -> None:
+        keypad = NumberKeypad(
+            self.tr("Board width for the preview"),
+            self.preview_width_mm,
+            1.0,
+            self.limits.max_width_mm,
+            "mm",
+            decimals=1,
+        )
+        keypad.valueAccepted.connect(self.set_preview_width)
+        self.context.open(keypad)
+
+    def set_preview_width(self, width_mm: float) -> None:
+        self.preview_width_mm = width_mm
+        self.update_preview()
+
+    def update_preview(self) -> None:
+        set_text(self.width_button, f"{format_number(self.preview_width_mm, 1)} mm")
+        if self.draft is None:
+            self.preview = None
+            self.plan_view.set_paths((), (), ())
+            return
+        preview = preview_recipe(self.draft, self.preview_width_mm, self.parameters, self.limits)
+        self.preview = preview
+        self.plan_view.set_paths(preview.outline, preview.toolpath, preview.cutting)
+        set_text(self.result_labels["head"], format_optional(preview.head_width_mm, 1, "mm"))
+        set_text(self.result_labels["d"], format_optional(preview.d_mm, 2, "mm"))
+        set_text(self.result_labels["r"], format_optional(preview.r_mm, 0, "mm"))
+        set_text(self.result_labels["tilt"], format_optional(preview.tilt_deg, 2, "°"))
+        set_text(self.preview_errors, "\n".join(preview.errors))
+
+    # -- actions -----------------------------------------------------------------------------
+
+    def _message(self, title: str, text: str) -> None:
+        self.context.open(MessageOverlay(title, text))
+
+    def save(self) -> None:
+        draft = self.draft
+        user = self.context.session.acting_user()
+        if draft is None:
+            return
+        if user is None:
+            self._message(self.tr("Not saved"), self.tr("No user account to save as."))
+            return
+        try:
+            saved = self.context.database.save_recipe(draft, user)
+        except FieldValidationError as exc:
+            self.errors = {}
+            lines = [e.message for e in exc.errors]
+            self.show_draft()
+            self._message(self.tr("Recipe not saved"), "\n".join(lines))
+            return
+        except DataError as exc:
+            self._message(self.tr("Recipe not saved"), str(exc))
+            return
+        self.current = saved
+        self.draft = saved
+        self.reload(saved.id)
+        self.context.notify(self.tr("Recipe %1 saved.").replace("%1", saved.name))
+        if (
+            self.snapshot is not None
+            and self.snapshot.recipe_id == saved.id
+            and not refusal(self.snapshot, "SelectRecipe")
+        ):
+            self.context.send(SelectRecipe(saved.id))  # the machine reloads it
+
+    def discard(self) -> None:
+        if self.current is not None:
+            self.load(self.current)
+        else:
+            self.draft = None
+            self.reload()
+
+    def use_on_machine(self) -> None:
+        if self.current is not None and self.current.id is not None:
+            self.context.send(SelectRecipe(self.current.id))
+            self.context.notify(self.tr("Recipe %1 selected.").replace("%1", self.current.name))
+
+    def new_recipe(self) -> None:
+        def start() -> None:
+            names = {r.name.casefold() for r in self.recipes}
+            name = self.tr("New recipe")
+            number = 2
+            while name.casefold() in names:
+                name = self.tr("New recipe %1").replace("%1", str(number))
+                number += 1
+            self.current = None
+            self.draft = new_recipe_template(name)
+            self.recipe_list.clearSelection()
+            self.update_preview()
+            self.show_draft()
+
+        self.after_discard_confirmed(start)
+
+    def copy_recipe(self) -> None:
+        source = self.current
+        if source is None or source.id is None:
+            return
+        keyboard = TextKeyboard(
+            self.tr("Name of the copy"),
+            self.tr("%1 copy").replace("%1", source.name)[:NAME_MAX_CHARS],
+            max_length=NAME_MAX_CHARS,
+            layout=self.context.keyboard_layout(),
+            check=lambda text: (
+                self._check("name", text)
+                if self.draft is None or self.draft.name != text
+                else self.tr("Choose a new name.")
+            ),
+        )
+
+        def copy(name: str) -> None:
+            user = self.context.session.acting_user()
+            if user is None or source.id is None:
+                return
+            try:
+                copied = self.context.database.copy_recipe(source.id, name, user)
+            except DataError as exc:
+                self._message(self.tr("Not copied"), str(exc))
+                return
+            self.current = copied
+            self.draft = copied
+            self.reload(copied.id)
+            self.context.notify(self.tr("Recipe %1 created.").replace("%1", copied.name))
+
+        keyboard.textAccepted.connect(lambda name: self.after_discard_confirmed(lambda: copy(name)))
+        self.context.open(keyboard)
+
+    def delete_recipe(self) -> None:
+        recipe = self.current
+        if recipe is None or recipe.id is None:
+            return
+
+        def confirm() -> None:
+            overlay = ConfirmOverlay(
+                self.tr("Delete recipe"),
+                self.tr("Delete recipe %1 (%2)? Its last version stays in the recipe history.")
+                .replace("%1", str(recipe.id))
+                .replace("%2", recipe.name),
+                self.tr("Delete"),
+                danger=True,
+            )
+            overlay.finished.connect(lambda ok: self._do_delete(recipe) if ok else None)
+            self.context.open(overlay)
+
+        self.context.require(Role.TECHNICIAN, confirm)
+
+    def _do_delete(self, recipe: Recipe) -> None:
+        user = self.context.session.acting_user()
+        if user is None or recipe.id is None:
+            return
+        try:
+            self.context.database.delete_recipe(recipe.id, user)
+        except DataError as exc:
+            self._message(self.tr("Not deleted"), str(exc))
+            return
+        self.current = None
+        self.draft = None
+        self.reload()
+        self.context.notify(self.tr("Recipe %1 deleted.").replace("%1", recipe.name))
+
+    def import_recipes(self, directory: Path | None = None) -> None:
+        def choose() -> None:
+            chooser = FileChooser(
+                self.tr("Import recipes"),
+                directory or default_exchange_dir(),
+                keyboard_layout=self.context.keyboard_layout(),
+            )
+            chooser.fileChosen.connect(lambda path: self.import_file(Path(path)))
+            self.context.open(chooser)
+
+        self.context.require(Role.TECHNICIAN, choose)
+
+    def import_file(self, path: Path) -> None:
+        user = self.context.session.acting_user()
+        if user is None:
+            return
+        try:
+            report = import_recipes(self.context.database, path, user)
+        except (DataError, OSError, ValueError) as exc:
+            self._message(self.tr("Import failed"), str(exc))
+            return
+        self.reload()
+        lines = report.lines()
+        shown = lines[:12] + (
+            [self.tr("… and %1 more lines").replace("%1", str(len(lines) - 12))]
+            if len(lines) > 12
+            else []
+        )
+        self._message(self.tr("Import"), "\n".join(shown))
+
+    def export_recipes(self, directory: Path | None = None) -> None:
+        name = f"recipes-{datetime.now().strftime('%Y%m%d-%H%M')}.json"
+        chooser = FileChooser(
+            self.tr("Export recipes"),
+            directory or default_exchange_dir(),
+            save_name=name,
+            keyboard_layout=self.context.keyboard_layout(),
+        )
+        chooser.fileChosen.connect(lambda path: self.export_file(Path(path)))
+        self.context.open(chooser)
+
+    def export_file(self, path: Path) -> None:
+        try:
+            count = export_recipes(self.context.database, path)
+        except (DataError, OSError, ValueError) as exc:
+            self._message(self.tr("Export failed"), str(exc))
+            return
+        self.context.notify(
+            self.tr("%1 recipes written to %2.").replace("%1", str(count)).replace("%2", str(path))
+        )
+
+    # -- machine ------------------------------------------------------------------------------
+
+    def activated(self) -> None:
+        self.parameters = self.context.database.get_parameters()
+        if not self.dirty:
+            self.reload()
+        if (
+            self.snapshot is not None
+            and self.snapshot.last_width_mm
+            and self.preview_width_mm == DEFAULT_PREVIEW_WIDTH_MM
+        ):
+            self.preview_width_mm = round(self.snapshot.last_width_mm, 1)
+        self.update_preview()
+
+    def update_snapshot(self, snapshot: MachineSnapshot, force: bool = False) -> None:
+        previous = self.snapshot
+        self.snapshot = snapshot
+        if (
+            force
+            or previous is None
+            or previous.allowed.get("SelectRecipe") != snapshot.allowed.get("SelectRecipe")
+        ):
+            self._update_buttons()
+
+    def apply_scale(self, scale: float) -> None:
+        self.list_widget.setFixedWidth(round(250 * scale))

@@ -1,0 +1,230 @@
+"""Render every screen to PNG, with the real machine driven into realistic states.
+
+Why through the link: the pictures in the README must show what an operator sees, so the
+machine is homed, a recipe is selected, a cycle is started and a board is cut through the same
+commands the buttons send; then a fault is injected (simulated machine) for the alarm
+pictures. Nothing is faked in the window. Works offscreen (``QT_QPA_PLATFORM=offscreen``).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QtMsgType, qInstallMessageHandler
+from PySide6.QtWidgets import QApplication
+
+from app.data.users import Role
+from app.machine.commands import (
+    Acknowledge,
+    ClearFaults,
+    Command,
+    EnterManual,
+    Home,
+    InjectFault,
+    LeaveManual,
+    LoadBoard,
+    Reset,
+    SelectRecipe,
+    Start,
+)
+from app.machine.link import MachineLink
+from app.machine.snapshot import MachineSnapshot
+from app.machine.states import CycleStep, MachineState
+from app.screens.application import create_main_window, ensure_application
+from app.screens.main_window import MainWindow
+
+if TYPE_CHECKING:
+    from app.data.database import Database
+
+# Messages of the offscreen platform that say nothing about the application.
+OFFSCREEN_NOISE = ("propagateSizeHints",)
+STEP_TIMEOUT_S = 120.0
+
+
+@contextmanager
+def quiet_offscreen_noise() -> Iterator[None]:
+    """Drop the offscreen platform's harmless warnings; everything else is printed."""
+
+    def handler(kind: QtMsgType, _context: object, message: str) -> None:
+        if any(noise in message for noise in OFFSCREEN_NOISE):
+            return
+        print(f"Qt {kind.name}: {message}")
+
+    previous = qInstallMessageHandler(handler)
+    try:
+        yield
+    finally:
+        qInstallMessageHandler(previous)
+
+
+class Driver:
+    """Polls the window's link until a condition holds (machine time runs while polling)."""
+
+    def __init__(self, app: QApplication, window: MainWindow) -> None:
+        self.app = app
+        self.window = window
+
+    def snapshot(self) -> MachineSnapshot | None:
+        return self.window.poller.snapshot
+
+    def until(
+        self, done: Callable[[MachineSnapshot], bool], what: str, timeout_s: float = STEP_TIMEOUT_S
+    ) -> MachineSnapshot:
+        deadline = time.monotonic() + timeout_s
+        while True:
+            seq = self.snapshot().seq if self.snapshot() is not None else -1
+            self.window.poller.poll()
+            self.app.processEvents()
+            snapshot = self.snapshot()
+            if snapshot is not None and done(snapshot):
+                return snapshot
+            if time.monotonic() > deadline:
+                state = snapshot.state.value if snapshot else "no snapshot"
+                message = snapshot.message if snapshot else ""
+                raise TimeoutError(
+                    f"screenshots: machine did not reach '{what}' within "
+                    f"{timeout_s:.0f} s (state {state}; {message})"
+                )
+            if snapshot is None or snapshot.seq == seq:
+                time.sleep(0.01)  # a machine in its own process: give it time
+
+    def send_and_wait(
+        self, command: Command, done: Callable[[MachineSnapshot], bool], what: str
+    ) -> MachineSnapshot:
+        self.window.link.send(command)
+        return self.until(done, what)
+
+    def settle(self, polls: int = 5) -> None:
+        for _ in range(polls):
+            self.window.poller.poll()
+            self.app.processEvents()
+
+
+def _homed_and_ready(driver: Driver) -> None:
+    snapshot = driver.until(lambda s: s.state is not MachineState.POWER_UP, "started")
+    if snapshot.state in (MachineState.ERROR, MachineState.EMERGENCY_STOP):
+        driver.window.link.send(Acknowledge(0))
+        snapshot = driver.send_and_wait(
+            Reset(),
+            lambda s: s.state not in (MachineState.ERROR, MachineState.EMERGENCY_STOP),
+            "reset",
+        )
+    if snapshot.state is MachineState.MANUAL:
+        snapshot = driver.send_and_wait(
+            LeaveManual(), lambda s: s.state is not MachineState.MANUAL, "automatic mode"
+        )
+    if not snapshot.all_homed or snapshot.state is MachineState.NOT_HOMED:
+        driver.send_and_wait(
+            Home(), lambda s: s.state is MachineState.READY and s.all_homed, "homed"
+        )
+
+
+def render_screenshots(
+    out_dir: Path, size: tuple[int, int], link: MachineLink, database: Database
+) -> list[Path]:
+    """Drive the machine through ``link`` and save one PNG per screen (plus the keypad) in
+    ``out_dir``; returns the files written. Raises TimeoutError naming the step the machine
+    did not reach, ValueError if the database has no recipe."""
+    recipes = database.list_recipes()
+    if not recipes:
+        raise ValueError("screenshots: the database has no recipe to load")
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+    with quiet_offscreen_noise():
+        app = ensure_application()
+        window = create_main_window(link, database)
+        assert isinstance(window, MainWindow)
+        window.poller.stop()  # the driver polls, so the pictures follow the machine exactly
+        window.resize(*size)
+        window.show()
+        driver = Driver(app, window)
+
+        def shoot(name: str) -> None:
+            driver.settle()
+            path = out_dir / f"{len(written) + 1:02d}-{name}.png"
+            if not window.grab().save(str(path)):
+                raise OSError(f"screenshots: could not write {path}")
+            written.append(path)
+
+        try:
+            _homed_and_ready(driver)
+            recipe = recipes[0]
+            assert recipe.id is not None
+            driver.send_and_wait(
+                SelectRecipe(recipe.id), lambda s: s.recipe_id == recipe.id, "recipe selected"
+            )
+            driver.send_and_wait(
+                Start(), lambda s: s.state is MachineState.AUTOMATIC, "cycle started"
+            )
+            driver.window.link.send(LoadBoard())
+            driver.until(
+                lambda s: s.pieces_total > 0 or s.cycle.step is CycleStep.CUTTING_A,
+                "cutting side A",
+            )
+            total = driver.snapshot().pieces_total  # type: ignore[union-attr]
+            # One whole board, so the counters and the last width are filled in.
+            driver.until(
+                lambda s: s.pieces_total > total or s.state is not MachineState.AUTOMATIC,
+                "first board finished",
+            )
+            driver.window.link.send(LoadBoard())
+            driver.until(
+                lambda s: (
+                    s.cycle.step is CycleStep.CUTTING_B or s.state is not MachineState.AUTOMATIC
+                ),
+                "cutting side B",
+            )
+            window.show_screen("main")
+            shoot("main-running")
+
+            window.show_screen("recipes")
+            screen = window.screen("recipes")
+            shoot("recipes")
+            screen.edit_field("thickness_mm")  # type: ignore[attr-defined]
+            overlay = window.overlay()
+            if overlay is not None:
+                for key in ("3", "2"):
+                    overlay.press(key)  # type: ignore[attr-defined]
+            shoot("recipes-keypad")
+            if overlay is not None:
+                overlay.reject()
+
+            technician = next((u for u in database.list_users() if u.role >= Role.TECHNICIAN), None)
+            if technician is not None:
+                window.session.set_user(technician)
+            window.show_screen("system")
+            system = window.screen("system")
+            system.show_group("motion")  # type: ignore[attr-defined]
+            shoot("system")
+            window.session.logout()
+
+            driver.send_and_wait(
+                InjectFault("following_error", "X"), lambda s: bool(s.alarms), "alarm raised"
+            )
+            window.show_screen("main")
+            shoot("main-alarm")
+            window.show_screen("alarms")
+            shoot("alarms")
+
+            driver.window.link.send(Acknowledge(0))
+            driver.window.link.send(ClearFaults())
+            driver.send_and_wait(
+                Reset(),
+                lambda s: s.state not in (MachineState.ERROR, MachineState.EMERGENCY_STOP),
+                "reset after the fault",
+            )
+            driver.send_and_wait(
+                EnterManual(), lambda s: s.state is MachineState.MANUAL, "manual mode"
+            )
+            window.show_screen("manual")
+            shoot("manual")
+        finally:
+            window.poller.stop()
+            window.close()
+            window.deleteLater()
+            app.processEvents()
+    return written

@@ -1,0 +1,82 @@
+"""Who is at the panel: the user level that unlocks settings, and the name for the records.
+
+Why an operator by default and a timeout: at power-on the machine must be usable for
+production without typing anything, so the panel starts at operator level; a technician or
+service engineer logs in with a PIN for settings and is logged out again after a few minutes
+without a touch, so a panel left unlocked does not stay unlocked.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import QObject, QTimer, Signal
+
+from app.data.users import Role, User
+
+IDLE_LOGOUT_S = 600.0
+
+Authenticate = Callable[[str], "User | None"]
+DefaultUser = Callable[[], "User | None"]
+
+
+class Session(QObject):
+    """The logged-in user (None: the anonymous operator level); ``userChanged`` on change."""
+
+    userChanged = Signal()  # noqa: N815 (Qt signal naming)
+
+    def __init__(
+        self,
+        authenticate: Authenticate,
+        default_user: DefaultUser,
+        idle_logout_s: float = IDLE_LOGOUT_S,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._authenticate = authenticate
+        self._default_user = default_user
+        self.user: User | None = None
+        self._idle = QTimer(self)
+        self._idle.setSingleShot(True)
+        self._idle.setInterval(round(idle_logout_s * 1000))
+        self._idle.timeout.connect(self.logout)
+
+    @property
+    def role(self) -> Role:
+        return self.user.role if self.user is not None else Role.OPERATOR
+
+    @property
+    def name(self) -> str:
+        return self.user.name if self.user is not None else "operator"
+
+    def acting_user(self) -> User | None:
+        """Who the records name: the logged-in user, else the database's operator account."""
+        return self.user if self.user is not None else self._default_user()
+
+    def can(self, role: Role) -> bool:
+        """True if the current level is at least ``role``."""
+        return self.role >= role
+
+    def login(self, pin: str) -> User | None:
+        """Log in with a PIN; None (and no change) when no user has it."""
+        user = self._authenticate(pin)
+        if user is not None:
+            self.set_user(user)
+        return user
+
+    def set_user(self, user: User) -> None:
+        """Make ``user`` (already authenticated) the logged-in one."""
+        self.user = user
+        self.touch()
+        self.userChanged.emit()
+
+    def logout(self) -> None:
+        self._idle.stop()
+        if self.user is not None:
+            self.user = None
+            self.userChanged.emit()
+
+    def touch(self) -> None:
+        """The panel was used: restart the idle timer of a logged-in user."""
+        if self.user is not None and self.user.role > Role.OPERATOR:
+            self._idle.start()

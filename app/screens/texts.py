@@ -1,0 +1,138 @@
+"""Words for the machine's states, steps, alarms and messages in the current language.
+
+Why here: the machine layer speaks English identifiers and messages (it has no Qt and must
+not); the screens translate them at the moment they are shown. Fixed vocabularies (states,
+cycle steps, roles) are tables of ``QT_TRANSLATE_NOOP`` entries; open-ended texts from the
+machine or the data layer (alarm titles, refusal reasons, parameter descriptions) are looked
+up by their English text in the contexts listed in :mod:`app.screens.catalogue_strings`,
+generated from those catalogues, so a new alarm or parameter shows up as a missing
+translation in the tests instead of silently staying English.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
+from app.data.users import Role
+from app.machine.snapshot import AlarmState
+from app.machine.states import CycleStep, MachineState
+
+MACHINE_TEXT_CONTEXT = "MachineText"
+ALARM_TEXT_CONTEXT = "AlarmText"
+PARAMETER_CONTEXT = "Parameters"
+
+_STATES: dict[MachineState, str] = {
+    MachineState.POWER_UP: QT_TRANSLATE_NOOP("States", "STARTING UP"),
+    MachineState.NOT_HOMED: QT_TRANSLATE_NOOP("States", "NOT HOMED"),
+    MachineState.HOMING: QT_TRANSLATE_NOOP("States", "HOMING"),
+    MachineState.READY: QT_TRANSLATE_NOOP("States", "READY"),
+    MachineState.AUTOMATIC: QT_TRANSLATE_NOOP("States", "RUNNING"),
+    MachineState.MANUAL: QT_TRANSLATE_NOOP("States", "MANUAL"),
+    MachineState.STOPPING: QT_TRANSLATE_NOOP("States", "STOPPING"),
+    MachineState.ERROR: QT_TRANSLATE_NOOP("States", "FAULT"),
+    MachineState.EMERGENCY_STOP: QT_TRANSLATE_NOOP("States", "EMERGENCY STOP"),
+}
+
+_STEPS: dict[CycleStep, str] = {
+    CycleStep.WAIT_FOR_PART: QT_TRANSLATE_NOOP("Steps", "Waiting for a board"),
+    CycleStep.CENTERING: QT_TRANSLATE_NOOP("Steps", "Centering"),
+    CycleStep.CLAMPING: QT_TRANSLATE_NOOP("Steps", "Clamping"),
+    CycleStep.MEASURING: QT_TRANSLATE_NOOP("Steps", "Measuring the width"),
+    CycleStep.STARTING_SPINDLE: QT_TRANSLATE_NOOP("Steps", "Starting the spindle"),
+    CycleStep.CUTTING_A: QT_TRANSLATE_NOOP("Steps", "Cutting side A"),
+    CycleStep.REPOSITIONING: QT_TRANSLATE_NOOP("Steps", "Repositioning and tilting"),
+    CycleStep.CUTTING_B: QT_TRANSLATE_NOOP("Steps", "Cutting side B"),
+    CycleStep.RETURNING: QT_TRANSLATE_NOOP("Steps", "Returning"),
+    CycleStep.UNCLAMPING: QT_TRANSLATE_NOOP("Steps", "Unclamping"),
+}
+
+_ALARM_STATES: dict[AlarmState, str] = {
+    AlarmState.NORMAL: QT_TRANSLATE_NOOP("AlarmStates", "normal"),
+    AlarmState.ACTIVE_UNACKED: QT_TRANSLATE_NOOP("AlarmStates", "active, unacknowledged"),
+    AlarmState.ACTIVE_ACKED: QT_TRANSLATE_NOOP("AlarmStates", "active, acknowledged"),
+    AlarmState.RTN_UNACKED: QT_TRANSLATE_NOOP("AlarmStates", "cleared, unacknowledged"),
+}
+
+# The data layer's history states (stored as text) -> the same words.
+_HISTORY_STATES: dict[str, str] = {
+    "normal": QT_TRANSLATE_NOOP("AlarmStates", "normal"),
+    "active_unacked": QT_TRANSLATE_NOOP("AlarmStates", "active, unacknowledged"),
+    "active_acked": QT_TRANSLATE_NOOP("AlarmStates", "active, acknowledged"),
+    "returned_unacked": QT_TRANSLATE_NOOP("AlarmStates", "cleared, unacknowledged"),
+    "shelved": QT_TRANSLATE_NOOP("AlarmStates", "shelved"),
+}
+
+_ROLES: dict[Role, str] = {
+    Role.OPERATOR: QT_TRANSLATE_NOOP("Roles", "Operator"),
+    Role.TECHNICIAN: QT_TRANSLATE_NOOP("Roles", "Technician"),
+    Role.SERVICE: QT_TRANSLATE_NOOP("Roles", "Service"),
+}
+
+_SEVERITIES: dict[str, str] = {
+    "fault": QT_TRANSLATE_NOOP("AlarmStates", "fault"),
+    "warning": QT_TRANSLATE_NOOP("AlarmStates", "warning"),
+}
+
+
+def _t(context: str, text: str) -> str:
+    return QCoreApplication.translate(context, text)
+
+
+def state_text(state: MachineState | None) -> str:
+    if state is None:
+        return _t("States", "NO MACHINE")
+    return _t("States", _STATES[state])
+
+
+def step_text(step: CycleStep | None) -> str:
+    if step is None:
+        return ""
+    return _t("Steps", _STEPS[step])
+
+
+def alarm_state_text(state: AlarmState) -> str:
+    return _t("AlarmStates", _ALARM_STATES[state])
+
+
+def history_state_text(value: str) -> str:
+    source = _HISTORY_STATES.get(value)
+    return _t("AlarmStates", source) if source else value
+
+
+def severity_text(severity: str) -> str:
+    source = _SEVERITIES.get(severity)
+    return _t("AlarmStates", source) if source else severity
+
+
+def role_text(role: Role) -> str:
+    return _t("Roles", _ROLES[role])
+
+
+def machine_text(text: str) -> str:
+    """A message or refusal reason from the machine, translated when it is a known one."""
+    return _t(MACHINE_TEXT_CONTEXT, text) if text else ""
+
+
+def alarm_text(code: str, text: str) -> str:
+    """An alarm's text: its catalogue title translated, the technical detail kept as is."""
+    from app.machine.alarms import CATALOGUE
+
+    definition = CATALOGUE.get(code)
+    if definition is None:
+        return text
+    title = _t(ALARM_TEXT_CONTEXT, definition.text)
+    if text.startswith(definition.text):
+        return title + text[len(definition.text) :]
+    return title
+
+
+def parameter_text(english: str) -> str:
+    """A parameter's description or group title from the data layer's catalogue."""
+    return _t(PARAMETER_CONTEXT, english)
+
+
+def duration_words(seconds: float) -> str:
+    """Used in tooltips: "12 s", "3 min"."""
+    if seconds < 120:
+        return _t("Units", "%1 s").replace("%1", f"{seconds:.0f}")
+    return _t("Units", "%1 min").replace("%1", f"{seconds / 60:.0f}")

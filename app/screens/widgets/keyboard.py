@@ -1,0 +1,170 @@
+"""A simple on-screen keyboard for short texts (recipe names, notes, filters).
+
+Why QWERTZ with č, š, ž in Slovenian: that is the keyboard a Slovenian operator knows, and
+recipe names use those letters; English gets QWERTY.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QKeyEvent
+from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QLabel, QPushButton, QWidget
+
+from app.screens.widgets.keypad import key_button
+from app.screens.widgets.overlay import Overlay
+
+TextCheck = Callable[[str], str]
+
+LAYOUTS: dict[str, tuple[str, ...]] = {
+    "qwerty": ("1234567890", "qwertyuiop", "asdfghjkl", "zxcvbnm"),
+    "qwertz": ("1234567890", "qwertzuiopš", "asdfghjklčž", "yxcvbnm"),
+}
+
+PUNCTUATION = "-_/.,()+#"
+
+
+class TextKeyboard(Overlay):
+    """Enter a line of text up to ``max_length`` characters.
+
+    ``textAccepted(str)`` is emitted on OK with the text stripped of outer spaces, after
+    ``check`` (if given) found nothing wrong."""
+
+    textAccepted = Signal(str)  # noqa: N815 (Qt signal naming)
+
+    def __init__(
+        self,
+        title: str,
+        text: str = "",
+        *,
+        max_length: int = 40,
+        layout: str = "qwerty",
+        check: TextCheck | None = None,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.setObjectName("textKeyboard")
+        self.text = text
+        self.max_length = max_length
+        self.shift = False
+        self._check = check
+        self.title_label = QLabel(title)
+        self.title_label.setProperty("role", "title")
+        self.display = QLabel()
+        self.display.setProperty("role", "display")
+        self.display.setObjectName("display")
+        self.display.setMinimumWidth(560)
+        self.error_label = QLabel()
+        self.error_label.setProperty("role", "error")
+        self.error_label.setObjectName("errorLabel")
+        self.error_label.setWordWrap(True)
+        self.letter_keys: dict[str, QPushButton] = {}
+
+        grid = QGridLayout()
+        grid.setSpacing(6)
+        rows = LAYOUTS.get(layout, LAYOUTS["qwerty"])
+        for row_index, row in enumerate(rows):
+            for column, char in enumerate(row):
+                button = key_button(char, "smallkey", name=f"key_{char}")
+                button.clicked.connect(lambda _=False, c=char: self.type_char(c))
+                grid.addWidget(button, row_index, column + (row_index >= 2))
+                self.letter_keys[char] = button
+        punctuation_row = QHBoxLayout()
+        for char in PUNCTUATION:
+            button = key_button(char, "smallkey", name=f"key_{char}")
+            button.clicked.connect(lambda _=False, c=char: self.type_char(c))
+            punctuation_row.addWidget(button)
+        bottom = QHBoxLayout()
+        self.shift_button = key_button("⇧", "smallkey", name="key_shift")
+        self.shift_button.setCheckable(True)
+        self.shift_button.toggled.connect(self._set_shift)
+        self.space_button = key_button("", "smallkey", name="key_space")
+        self.space_button.clicked.connect(lambda: self.type_char(" "))
+        self.backspace_button = key_button("⌫", "smallkey", name="key_backspace")
+        self.backspace_button.clicked.connect(self.backspace)
+        self.clear_button = key_button("C", "smallkey", name="key_clear")
+        self.clear_button.clicked.connect(self.clear)
+        self.cancel_button = key_button("", "smallkey", name="cancelButton")
+        self.cancel_button.clicked.connect(self.reject)
+        self.ok_button = key_button("", "smallkey", name="okButton")
+        self.ok_button.setProperty("kind", "primary")
+        self.ok_button.clicked.connect(self.confirm)
+        bottom.addWidget(self.shift_button)
+        bottom.addWidget(self.space_button, 3)
+        bottom.addWidget(self.backspace_button)
+        bottom.addWidget(self.clear_button)
+        bottom.addWidget(self.cancel_button, 1)
+        bottom.addWidget(self.ok_button, 1)
+
+        self.panel_layout.addWidget(self.title_label)
+        self.panel_layout.addWidget(self.display)
+        self.panel_layout.addWidget(self.error_label)
+        self.panel_layout.addLayout(grid)
+        self.panel_layout.addLayout(punctuation_row)
+        self.panel_layout.addLayout(bottom)
+        self.retranslate()
+        self._refresh()
+
+    def retranslate(self) -> None:
+        self.space_button.setText(self.tr("Space"))
+        self.cancel_button.setText(self.tr("Cancel"))
+        self.ok_button.setText(self.tr("OK"))
+
+    def _set_shift(self, on: bool) -> None:
+        self.shift = on
+        for char, button in self.letter_keys.items():
+            button.setText(char.upper() if on else char)
+
+    def type_char(self, char: str) -> None:
+        if len(self.text) >= self.max_length:
+            self.error_label.setText(
+                self.tr("At most %1 characters.").replace("%1", str(self.max_length))
+            )
+            return
+        self.text += char.upper() if self.shift else char
+        if self.shift:
+            self.shift_button.setChecked(False)
+        self.error_label.setText("")
+        self._refresh()
+
+    def backspace(self) -> None:
+        self.text = self.text[:-1]
+        self.error_label.setText("")
+        self._refresh()
+
+    def clear(self) -> None:
+        self.text = ""
+        self._refresh()
+
+    def keyPressEvent(self, event: QKeyEvent) -> None:
+        key = event.key()
+        if key == Qt.Key.Key_Backspace:
+            self.backspace()
+        elif key in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            self.confirm()
+        elif key == Qt.Key.Key_Escape:
+            self.reject()
+        elif event.text() and event.text().isprintable():
+            if len(self.text) < self.max_length:
+                self.text += event.text()
+                self._refresh()
+        else:
+            super().keyPressEvent(event)
+
+    def _refresh(self) -> None:
+        self.display.setText(self.text + "▏")
+
+    def problem(self) -> str:
+        text = self.text.strip()
+        if not text:
+            return self.tr("Enter a text.")
+        return self._check(text) if self._check is not None else ""
+
+    def confirm(self) -> None:
+        problem = self.problem()
+        if problem:
+            self.error_label.setText(problem)
+            return
+        self.textAccepted.emit(self.text.strip())
+        self.accept()
