@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -287,10 +288,22 @@ def run(args: argparse.Namespace) -> int:
         print(f"stave solve: {exc}", file=sys.stderr)
         return EXIT_INVALID_INPUT
     if args.json:
-        print(json.dumps(to_json_object(profile, toolpath)))
+        _emit(json.dumps(to_json_object(profile, toolpath)))
     else:
-        print(format_report(profile, toolpath, ratios))
+        _emit(format_report(profile, toolpath, ratios))
     return EXIT_OK
+
+
+def _emit(text: str) -> None:
+    """Print to stdout; a reader that went away (`stave solve | head`) is not an error."""
+    try:
+        print(text)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # Point stdout at /dev/null so the interpreter's final flush does not fail again.
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
 
 
 class _OneLineParser(argparse.ArgumentParser):

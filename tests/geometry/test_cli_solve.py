@@ -253,3 +253,20 @@ def test_module_entry_point():
     )
     assert result.returncode == 2
     assert "Traceback" not in result.stderr and result.stderr.count("\n") == 1
+
+
+def test_a_reader_that_goes_away_is_not_an_error():
+    # `stave solve ... | head -3`: the pipe closes before the output is written.
+    code = "import sys; from app.geometry.cli_solve import main; sys.exit(main(sys.argv[1:]))"
+    process = subprocess.Popen(
+        [sys.executable, "-c", code, *EXAMPLE_ARGS],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        cwd=REPO,
+    )
+    assert process.stdout is not None and process.stderr is not None
+    process.stdout.close()
+    error = process.stderr.read().decode()
+    process.stderr.close()
+    assert process.wait(timeout=60) == 0
+    assert error == ""
