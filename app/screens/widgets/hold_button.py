@@ -35,6 +35,11 @@ class HoldButton(QPushButton):
     def held(self) -> bool:
         return self._held
 
+    @property
+    def refreshing(self) -> bool:
+        """True while the refresh timer runs (only while held)."""
+        return self._timer.isActive()
+
     def _start(self) -> None:
         if self._held:
             return

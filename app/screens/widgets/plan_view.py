@@ -61,6 +61,8 @@ def _pieces(xy: np.ndarray, segment_on: np.ndarray) -> np.ndarray:
             start = None
     if start is not None:
         rows.append(xy[start:])
+    elif rows:
+        rows.pop()  # no separator after the last piece
     if not rows:
         return np.empty((0, 2))
     return np.vstack(rows)

@@ -1,0 +1,88 @@
+"""Fixtures for the screen tests: offscreen Qt, a real database, the real machine in-process.
+
+The machine is the real machine layer (state machine, cycle, planner, simulated drives)
+behind ``LocalMachineLink`` on a simulated clock: each poll of the screens advances it. No
+fake machine: what the tests see is what the panel does.
+"""
+
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+import shutil
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtWidgets import QPushButton, QWidget
+
+from app.data.database import Database
+
+HERE = Path(__file__).resolve().parent
+# The offscreen platform warns that it cannot propagate size hints whenever a top-level
+# window is shown or restyled; that says nothing about the application.
+OFFSCREEN_NOISE = "This plugin does not support propagateSizeHints"
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    for item in items:
+        if HERE in Path(str(item.fspath)).resolve().parents:
+            item.add_marker(pytest.mark.qt_log_ignore(OFFSCREEN_NOISE))
+
+
+@pytest.fixture(scope="session")
+def template_db(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """One brand-new database per session (hashing the default PINs takes a moment)."""
+    path = tmp_path_factory.mktemp("screens-template") / "template.db"
+    Database.open(path).close()
+    return path
+
+
+@pytest.fixture
+def db_path(template_db: Path, tmp_path: Path) -> Path:
+    path = tmp_path / "stave.db"
+    shutil.copyfile(template_db, path)
+    return path
+
+
+@pytest.fixture
+def database(db_path: Path) -> Iterator[Database]:
+    db = Database.open(db_path)
+    yield db
+    db.close()
+
+
+@pytest.fixture
+def host(qtbot) -> QWidget:
+    """A window-sized widget, themed, to open overlays on."""
+    from app.screens.theme import stylesheet
+
+    widget = QWidget()
+    widget.setObjectName("centralHost")
+    widget.setStyleSheet(stylesheet(1.0))
+    widget.resize(1024, 768)
+    qtbot.addWidget(widget)
+    widget.show()
+    return widget
+
+
+def click(qtbot, button: QPushButton) -> None:
+    """Tap a button as a finger would (press and release inside it)."""
+    from PySide6.QtCore import Qt
+
+    assert button.isVisible(), f"{button.objectName()} is not visible"
+    assert button.isEnabled(), f"{button.objectName()} is disabled: {button.toolTip()}"
+    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
+
+
+def find_button(parent: QWidget, name: str) -> QPushButton:
+    button = parent.findChild(QPushButton, name)
+    assert button is not None, f"no button {name!r}"
+    return button
+
+
+@pytest.fixture
+def tap(qtbot) -> Callable[[QPushButton], None]:
+    return lambda button: click(qtbot, button)
