@@ -1,0 +1,151 @@
+"""The machine's digital I/O on a Modbus remote I/O coupler: :class:`DigitalIO`.
+
+One "read discrete inputs" (function 2) and one "write multiple coils" (function 15) per
+period. The outputs are written every period, changed or not: a coupler's Modbus watchdog
+(set it in the coupler, e.g. 100 ms) switches its outputs off when the master falls silent,
+and only a steady stream of writes keeps it fed.
+
+Inputs listed in ``inverted`` are wired as normally-closed contacts and read inverted, so
+that :class:`InputImage` always says "healthy" for True.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict
+
+from app.drivers.contracts import (
+    CommunicationError,
+    DeviceEvent,
+    DigitalIO,
+    DriverError,
+    InputImage,
+    LifecycleError,
+    LifecycleState,
+    OutputImage,
+)
+from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
+from app.drivers.modbus.link import ModbusLink
+from app.drivers.modbus.settings import CouplerSettings
+
+USER = "io"
+
+
+class ModbusIO(DigitalIO):
+    def __init__(self, settings: CouplerSettings, bus: ModbusBus) -> None:
+        self.settings = settings
+        self._bus = bus
+        self.address = DeviceAddress("io", settings.endpoint, settings.device_id)
+        self._state = LifecycleState.UNCONFIGURED
+        self._inputs: InputImage | None = None
+
+    @property
+    def lifecycle_state(self) -> LifecycleState:
+        return self._state
+
+    def configure(self) -> None:
+        if self._state not in (LifecycleState.UNCONFIGURED, LifecycleState.INACTIVE,
+                               LifecycleState.ERROR):
+            raise LifecycleError("io", f"configure in state {self._state.value}")
+        try:
+            self._bus.acquire(USER)
+            self._inputs = self._read(tolerate=False)
+        except DriverError:
+            self._state = LifecycleState.ERROR
+            self._bus.release(USER)
+            raise
+        self._state = LifecycleState.INACTIVE
+
+    def activate(self) -> None:
+        """Start cyclic exchange with every output off."""
+        if self._state is not LifecycleState.INACTIVE:
+            raise LifecycleError("io", f"activate in state {self._state.value}")
+        try:
+            self._write(OutputImage(), tolerate=False)
+        except DriverError:
+            self._state = LifecycleState.ERROR
+            raise
+        self._state = LifecycleState.ACTIVE
+
+    def deactivate(self) -> None:
+        """Every output off; INACTIVE even when the link is gone (see the motion side)."""
+        if self._state is not LifecycleState.ACTIVE:
+            return
+        self._state = LifecycleState.INACTIVE
+        if self._bus.lost:
+            self._state = LifecycleState.ERROR
+            return
+        self._write(OutputImage(), tolerate=False)
+
+    def shutdown(self) -> None:
+        if self._state is LifecycleState.FINALIZED:
+            return
+        try:
+            self.deactivate()
+        except DriverError:
+            pass  # shutdown must always finish; the loss has already been reported
+        finally:
+            self._bus.release(USER)
+            self._state = LifecycleState.FINALIZED
+
+    def events(self) -> list[DeviceEvent]:
+        return self._bus.events()
+
+    def _check(self, *allowed: LifecycleState) -> None:
+        if self._bus.lost and self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE):
+            self._state = LifecycleState.ERROR
+        if self._state not in allowed:
+            if self._state is LifecycleState.ERROR and self._bus.lost:
+                raise CommunicationError("io", "Modbus link lost; an operator's reset must "
+                                         "reconfigure the backend")
+            raise LifecycleError("io", f"not allowed in state {self._state.value}")
+
+    # -- cyclic exchange ------------------------------------------------------------------
+    def _read(self, *, tolerate: bool) -> InputImage:
+        s = self.settings
+        count = s.input_count
+
+        def read(link: ModbusLink) -> list[bool]:
+            return link.read_discrete_inputs(s.device_id, s.inputs_address, count)
+
+        try:
+            bits = self._bus.exchange(self.address, read, tolerate=tolerate)
+        except TransientError:
+            assert self._inputs is not None  # configure read the inputs once
+            return self._inputs
+        except CommunicationError:
+            if self._bus.lost:
+                self._state = LifecycleState.ERROR
+            raise
+        values = {name: bits[bit] != (name in s.inverted) for name, bit in s.input_bits.items()}
+        self._inputs = InputImage(**values)
+        return self._inputs
+
+    def _write(self, outputs: OutputImage, *, tolerate: bool) -> None:
+        s = self.settings
+        count = s.output_count
+        if count == 0:
+            return
+        wanted = asdict(outputs)
+        bits = [False] * count
+        for name, bit in s.output_bits.items():
+            bits[bit] = bool(wanted[name])
+
+        def write(link: ModbusLink) -> None:
+            link.write_coils(s.device_id, s.outputs_address, bits)
+
+        try:
+            self._bus.exchange(self.address, write, tolerate=tolerate)
+        except TransientError:
+            return  # written again next period
+        except CommunicationError:
+            if self._bus.lost:
+                self._state = LifecycleState.ERROR
+            raise
+
+    def read_inputs(self) -> InputImage:
+        self._check(LifecycleState.INACTIVE, LifecycleState.ACTIVE)
+        return self._read(tolerate=True)
+
+    def write_outputs(self, outputs: OutputImage) -> None:
+        self._check(LifecycleState.ACTIVE)
+        self._write(outputs, tolerate=True)
