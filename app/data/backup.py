@@ -153,9 +153,13 @@ def restore_database(backup_path: Path, database_path: Path) -> RestoreReport:
         raise BackupError(f"{backup_path}: this is the database itself")
     previous: Path | None = None
     if database_path.exists():
-        previous = database_path.with_name(
-            f"{database_path.stem}.before-restore-{_stamp(None)}{database_path.suffix or '.db'}"
-        )
+        stem = f"{database_path.stem}.before-restore-{_stamp(None)}"
+        suffix = database_path.suffix or ".db"
+        previous = database_path.with_name(f"{stem}{suffix}")
+        number = 1
+        while previous.exists():  # two restores within one second
+            number += 1
+            previous = database_path.with_name(f"{stem}-{number}{suffix}")
         backup_database(database_path, previous)
     try:
         with (

@@ -639,11 +639,11 @@ class Database:
         return self.save_recipe(replace(source, id=None, name=new_name), user)
 
     def recipe_history(self, recipe_id: int | None = None, limit: int = 1000) -> list[RecipeChange]:
-        """Logged recipe changes, newest first (all recipes, or one id, deleted ones included)."""
+        """Logged recipe changes, last logged first (all recipes, or one id, deleted ones too)."""
         where, params = ("WHERE recipe_id = ?", [recipe_id]) if recipe_id is not None else ("", [])
         rows = self._conn.execute(
             "SELECT id, time, recipe_id, recipe_name, action, user_name, before_json, after_json "
-            f"FROM recipe_changes {where} ORDER BY time DESC, id DESC LIMIT ?",
+            f"FROM recipe_changes {where} ORDER BY id DESC LIMIT ?",
             (*params, int(limit)),
         )
         return [
@@ -728,7 +728,7 @@ class Database:
         end: datetime | None = None,
         limit: int = 1000,
     ) -> list[ParameterChange]:
-        """Logged parameter changes, newest first; optionally one parameter, [start, end)."""
+        """Logged parameter changes, last logged first; optionally one parameter, [start, end)."""
         conditions: list[str] = []
         params: list[object] = []
         if name is not None:
@@ -743,7 +743,7 @@ class Database:
         where = f"WHERE {' AND '.join(conditions)}" if conditions else ""
         rows = self._conn.execute(
             "SELECT id, time, name, old_value, new_value, user_name, user_role FROM "
-            f"parameter_changes {where} ORDER BY time DESC, id DESC LIMIT ?",
+            f"parameter_changes {where} ORDER BY id DESC LIMIT ?",
             (*params, int(limit)),
         )
         return [
