@@ -1,0 +1,267 @@
+"""Lifecycle and supervision shared by the CANopen motion backend and the CANopen I/O.
+
+Why one base: both roles go through the same start-up (NMT pre-operational, SDO
+configuration, heartbeat, NMT start) and the same rules when a node is lost. Those rules:
+
+- A node is lost when its heartbeat stops (our consumer watchdog), when its heartbeat says it
+  left OPERATIONAL (a reboot: its PDO mapping is gone), when its cyclic TPDO misses
+  ``pdo_miss_limit`` SYNCs in a row, or when the receive thread died.
+- The loss is latched: the device goes to LifecycleState.ERROR, queues COMMUNICATION_LOST,
+  and every read and write raises CommunicationError until ``configure()`` and
+  ``activate()`` are called again (the machine layer does that on an operator's reset). A
+  heartbeat heard again gives COMMUNICATION_RESTORED, never a silent recovery.
+- ``deactivate()`` never raises for a dead link: the machine layer calls it before it
+  reconnects, and a dead node cannot be reached anyway.
+
+Time: every wait here is on a condition (frames arriving), bounded by a timeout from the
+settings; nothing sleeps.
+"""
+
+from __future__ import annotations
+
+import logging
+from abc import abstractmethod
+from collections.abc import Callable
+
+from app.drivers.canopen.bus import NMT_STATE_NAMES, CanopenBus
+from app.drivers.canopen.objects import DEVICE_TYPE, PRODUCER_HEARTBEAT_TIME
+from app.drivers.canopen.settings import CanopenSettings
+from app.drivers.canopen.watchdog import NMT_OPERATIONAL
+from app.drivers.contracts import (
+    CommunicationError,
+    DeviceEvent,
+    DriverError,
+    LifecycleError,
+    LifecycleState,
+)
+
+log = logging.getLogger(__name__)
+
+
+class CanopenDevice:
+    """configure/activate/deactivate/shutdown of a group of nodes on a shared bus."""
+
+    owner = ""  # "motion" or "io": the bus routes this group's events by it
+    profile = 0  # CiA device profile the nodes must report in 0x1000 (402, 401)
+
+    def __init__(self, bus: CanopenBus, settings: CanopenSettings) -> None:
+        self._bus = bus
+        self._settings = settings
+        self._state = LifecycleState.UNCONFIGURED
+        self._fault = ""  # latched reason of a loss; cleared only by configure()
+        self._fault_device = ""
+        self._acquired = False
+        self._read_seq = -1
+        self._checked_seq = -1
+        self._missed: dict[int, int] = {}
+
+    # ---- what a group provides ----
+    @property
+    @abstractmethod
+    def device_label(self) -> str: ...
+
+    @abstractmethod
+    def _nodes(self) -> dict[int, str]:
+        """node id -> label, for every node of this group."""
+
+    @abstractmethod
+    def _add_nodes(self) -> None:
+        """Add the nodes to the network and subscribe their TPDOs."""
+
+    @abstractmethod
+    def _configure_node(self, node_id: int) -> None:
+        """SDO configuration of one node (it is PRE-OPERATIONAL)."""
+
+    @abstractmethod
+    def _latest_seq(self, node_id: int) -> int:
+        """The SYNC number of the node's latest cyclic TPDO, -1 if none (under the lock)."""
+
+    @abstractmethod
+    def _start_exchange(self) -> None:
+        """After NMT start: first feedback, command = measured, first RPDOs."""
+
+    @abstractmethod
+    def _stop_exchange(self) -> None:
+        """Before NMT pre-operational: drives disabled, outputs off (may raise)."""
+
+    def _on_lost(self) -> None:
+        """Best effort when a node is lost: bring the reachable nodes to a safe state."""
+
+    # ---- lifecycle ----
+    @property
+    def lifecycle_state(self) -> LifecycleState:
+        return self._state
+
+    def configure(self) -> None:
+        if self._state is LifecycleState.FINALIZED:
+            raise LifecycleError(self.device_label, "shut down; create a new backend")
+        if self._state is LifecycleState.ACTIVE:
+            raise LifecycleError(self.device_label, "active: deactivate before configuring")
+        self._release()
+        try:
+            self._bus.acquire()
+            self._acquired = True
+            self._add_nodes()
+            with self._bus.condition:
+                beats = {n: self._bus.beats(n) for n in self._nodes()}
+            for node_id in self._nodes():
+                self._bus.nmt(node_id, "PRE-OPERATIONAL")
+                self._check_profile(node_id)
+                self._bus.sdo_download(node_id, PRODUCER_HEARTBEAT_TIME, 0,
+                                       self._settings.heartbeat_ms.to_bytes(2, "little"),
+                                       "producer heartbeat time")
+                self._configure_node(node_id)
+            self._wait_nodes(lambda n: self._bus.beats(n) > beats[n], "no heartbeat")
+        except DriverError:
+            self._release()
+            self._state = LifecycleState.ERROR
+            raise
+        self._fault = ""
+        self._missed = {n: 0 for n in self._nodes()}
+        self._state = LifecycleState.INACTIVE
+        log.info("%s configured", self.device_label)
+
+    def activate(self) -> None:
+        if self._state is not LifecycleState.INACTIVE:
+            raise LifecycleError(self.device_label,
+                                 f"cannot activate from {self._state.value}; configure first")
+        try:
+            self._bus.watchdog.watch(self._nodes())
+            for node_id in self._nodes():
+                self._bus.nmt(node_id, "OPERATIONAL")
+            self._wait_nodes(
+                lambda n: self._bus.watchdog.nmt_state(n) == NMT_OPERATIONAL,
+                "did not report OPERATIONAL after NMT start")
+            self._read_seq = -1
+            self._checked_seq = -1
+            self._missed = {n: 0 for n in self._nodes()}
+            self._start_exchange()
+        except DriverError as exc:
+            self._state = LifecycleState.ERROR
+            self._fault, self._fault_device = str(exc), exc.device
+            raise
+        self._state = LifecycleState.ACTIVE
+        log.info("%s active", self.device_label)
+
+    def deactivate(self) -> None:
+        if self._state not in (LifecycleState.ACTIVE, LifecycleState.ERROR) or not self._acquired:
+            return
+        was_active = self._state is LifecycleState.ACTIVE
+        try:
+            self._stop_exchange()
+            for node_id in self._nodes():
+                if not self._bus.lost_reason(node_id):
+                    self._bus.nmt(node_id, "PRE-OPERATIONAL")
+        except DriverError as exc:
+            log.warning("%s: deactivate: %s", self.device_label, exc)
+            if was_active:
+                self._state = LifecycleState.ERROR
+                self._fault, self._fault_device = str(exc), exc.device
+            return
+        if was_active:
+            self._state = LifecycleState.INACTIVE
+        log.info("%s deactivated", self.device_label)
+
+    def shutdown(self) -> None:
+        if self._state is LifecycleState.FINALIZED:
+            return
+        if self._state is LifecycleState.ACTIVE:
+            self.deactivate()
+        self._release()
+        self._state = LifecycleState.FINALIZED
+
+    def events(self) -> list[DeviceEvent]:
+        if not self._acquired:
+            return []
+        self._bus.supervise()
+        return self._bus.events(self.owner)
+
+    # ---- helpers for the subclasses ----
+    def _release(self) -> None:
+        if self._acquired:
+            self._bus.remove_nodes(list(self._nodes()))
+            self._bus.release()
+            self._acquired = False
+
+    def _check_profile(self, node_id: int) -> None:
+        data = self._bus.sdo_upload(node_id, DEVICE_TYPE, 0, "device type")
+        device_type = int.from_bytes(data[:4], "little")
+        if device_type & 0xFFFF != self.profile:
+            raise DriverError(self._nodes()[node_id],
+                              f"device type 0x{device_type:08X} is not a CiA {self.profile} "
+                              "device: check the node id")
+
+    def _wait_nodes(self, ready: Callable[[int], bool], what: str) -> None:
+        """Wait (bounded by startup_timeout_ms) until ``ready(node_id)`` for every node."""
+        timeout_s = self._settings.startup_timeout_ms / 1000.0
+        nodes = self._nodes()
+        if self._bus.wait(lambda: all(ready(n) for n in nodes), timeout_s):
+            return
+        with self._bus.condition:
+            missing = [n for n in nodes if not ready(n)]
+        raise CommunicationError(nodes[missing[0]],
+                                 f"{what} within {self._settings.startup_timeout_ms} ms")
+
+    def _ensure_active(self) -> None:
+        if self._state is LifecycleState.ACTIVE:
+            return
+        if self._state is LifecycleState.ERROR and self._fault:
+            raise CommunicationError(self._fault_device or self.device_label,
+                                     f"stopped after: {self._fault}; reset to reconnect")
+        raise LifecycleError(self.device_label, f"not active ({self._state.value})")
+
+    def _lose(self, device: str, reason: str) -> CommunicationError:
+        """Latch a loss; returns the error for the caller to raise."""
+        self._state = LifecycleState.ERROR
+        self._fault, self._fault_device = reason, device
+        try:
+            self._on_lost()
+        except DriverError as exc:
+            log.warning("%s: safe stop after a loss: %s", self.device_label, exc)
+        return CommunicationError(device, reason)
+
+    def _supervise_cycle(self) -> None:
+        """Once per read: receive thread alive, every node heard and OPERATIONAL."""
+        try:
+            self._bus.check()
+        except CommunicationError as exc:
+            raise self._lose(exc.device, str(exc)) from exc
+        self._bus.supervise()
+        for node_id, label in self._nodes().items():
+            reason = self._bus.lost_reason(node_id)
+            if not reason:
+                state = self._bus.watchdog.nmt_state(node_id)
+                if state is not None and state != NMT_OPERATIONAL:
+                    name = NMT_STATE_NAMES.get(state, f"state 0x{state:02X}")
+                    reason = f"left OPERATIONAL (heartbeat says {name}): rebooted or stopped"
+                    self._bus.report_lost(node_id, reason)
+            if reason:
+                raise self._lose(label, reason)
+
+    def _refresh(self) -> None:
+        """Make sure the answers to the latest SYNC are in, and count missed TPDOs.
+
+        In the machine loop the previous ``write`` sent the SYNC, about one period ago, and
+        its answers are normally in; a late answer is waited for at most half a period. A
+        tool that only reads gets a SYNC of its own here and waits for its answers."""
+        bus = self._bus
+        if bus.sync_seq == self._read_seq:
+            bus.sync(feedback=True)
+        seq = bus.sync_seq
+        nodes = self._nodes()
+        wait_s = (max(0.05, 10 * self._settings.period_s) if bus.sync_is_feedback
+                  else self._settings.period_s / 2)
+        bus.wait(lambda: all(self._latest_seq(n) >= seq for n in nodes), wait_s)
+        self._read_seq = seq
+        if self._checked_seq == seq:
+            return
+        self._checked_seq = seq
+        with bus.condition:
+            late = [n for n in nodes if self._latest_seq(n) < seq]
+        for node_id in nodes:
+            self._missed[node_id] = self._missed.get(node_id, 0) + 1 if node_id in late else 0
+            if self._missed[node_id] >= self._settings.pdo_miss_limit:
+                reason = (f"no cyclic TPDO for {self._missed[node_id]} SYNCs in a row "
+                          f"(limit {self._settings.pdo_miss_limit})")
+                self._bus.report_lost(node_id, reason)
+                raise self._lose(nodes[node_id], reason)

@@ -1,0 +1,144 @@
+"""Fixtures: simulated drives and I/O on a virtual CAN channel unique to each test, a machine
+configuration naming that channel, and the backend under test.
+
+Real time: the bus is real-time (heartbeats, timeouts), so these tests wait on conditions
+(frames arriving) with short bounds; the heartbeat is 50 ms and its timeout 150 ms.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+import uuid
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import pytest
+
+from app.config import MachineConfig, parse_config
+from app.drivers.canopen.backend import create_backend
+from app.drivers.canopen.settings import INPUT_FUNCTIONS, OUTPUT_FUNCTIONS
+from app.drivers.contracts import AxisFeedback, InputImage, MachineBackend, OutputImage
+from tests.drivers.canopen.sim_drive import SimDrive, SimIoNode, SimNetwork
+
+NODE_IDS = {"X": 1, "Y": 2, "Z": 3}
+IO_NODE = 10
+COUNTS = {"X": 1000.0, "Y": 1000.0, "Z": 10000.0}  # per mm, per mm, per degree
+INPUT_BITS = {name: bit for bit, name in enumerate(INPUT_FUNCTIONS)}
+OUTPUT_BITS = {name: bit for bit, name in enumerate(OUTPUT_FUNCTIONS)}
+HEALTHY_INPUTS = sum(1 << INPUT_BITS[n] for n in ("estop_ok", "guard_closed",
+                                                   "centering_retracted", "clamps_open"))
+
+
+def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
+    settings: dict[str, Any] = {
+        "interface": "virtual",
+        "channel": channel,
+        "bitrate": 1_000_000,
+        "heartbeat_ms": 50,
+        "heartbeat_timeout_ms": 150,
+        "sdo_timeout_ms": 300,
+        "startup_timeout_ms": 1000,
+        "pdo_miss_limit": 25,
+        "axes": {name: {"node_id": node, "counts_per_unit": COUNTS[name]}
+                 for name, node in NODE_IDS.items()},
+        "io": {"node_id": IO_NODE, "inputs": dict(INPUT_BITS), "outputs": dict(OUTPUT_BITS)},
+    }
+    settings.update(overrides)
+    return settings
+
+
+def machine_data(channel: str, **overrides: Any) -> dict[str, Any]:
+    return {"backend": {"name": "canopen", "period_ms": 4.0,
+                        "canopen": canopen_settings(channel, **overrides)},
+            "axes": {"X": {"encoder": "incremental"}, "Y": {"encoder": "incremental"},
+                     "Z": {"encoder": "absolute"}}}
+
+
+@dataclass
+class Bench:
+    """The simulated side of the bus."""
+
+    network: SimNetwork
+    drives: dict[str, SimDrive]
+    io: SimIoNode
+
+
+@pytest.fixture(autouse=True)
+def no_threads_left() -> Iterator[None]:
+    """Fail a test that leaves a thread behind (notifier, heartbeat producer, ...)."""
+    before = set(threading.enumerate())
+    yield
+    deadline = time.monotonic() + 3.0
+    for thread in set(threading.enumerate()) - before:
+        thread.join(max(0.0, deadline - time.monotonic()))
+    alive = [t.name for t in set(threading.enumerate()) - before if t.is_alive()]
+    assert not alive, f"threads left running: {alive}"
+
+
+@pytest.fixture
+def channel() -> str:
+    return f"stave-test-{uuid.uuid4().hex[:12]}"
+
+
+@pytest.fixture
+def bench(channel: str) -> Iterator[Bench]:
+    network = SimNetwork(channel)
+    drives = {name: SimDrive(network, node) for name, node in NODE_IDS.items()}
+    io = SimIoNode(network, IO_NODE)
+    io.set_inputs(HEALTHY_INPUTS)
+    for node in network.nodes:
+        node.boot()
+    yield Bench(network, drives, io)
+    network.close()
+
+
+@pytest.fixture
+def config(channel: str) -> MachineConfig:
+    return parse_config(machine_data(channel))
+
+
+@pytest.fixture
+def backend(config: MachineConfig, bench: Bench) -> Iterator[MachineBackend]:
+    created = create_backend(config)
+    yield created
+    for device in created.devices():
+        device.shutdown()
+
+
+def start(backend: MachineBackend) -> None:
+    for device in backend.devices():
+        device.configure()
+    for device in backend.devices():
+        device.activate()
+
+
+def period(backend: MachineBackend, positions: Mapping[str, float] | None = None,
+           outputs: OutputImage | None = None) -> tuple[dict[str, AxisFeedback], InputImage]:
+    """One machine period: read everything, then write everything (as the machine loop)."""
+    feedback = dict(backend.motion.read_axes())
+    inputs = backend.io.read_inputs()
+    targets = {name: fb.position for name, fb in feedback.items()}
+    targets.update(positions or {})
+    backend.motion.write_setpoints(targets)
+    backend.io.write_outputs(outputs or OutputImage())
+    return feedback, inputs
+
+
+def run_until(backend: MachineBackend, done: Callable[[dict[str, AxisFeedback]], bool],
+              max_periods: int = 200,
+              positions: Callable[[int], Mapping[str, float]] | None = None,
+              ) -> dict[str, AxisFeedback]:
+    """Run periods until ``done(feedback)``; fails after ``max_periods``."""
+    for n in range(max_periods):
+        feedback, _ = period(backend, positions(n) if positions else None)
+        if done(feedback):
+            return feedback
+    raise AssertionError(f"condition not reached in {max_periods} periods: {feedback}")
+
+
+def enable_all(backend: MachineBackend) -> dict[str, AxisFeedback]:
+    for name in backend.motion.axis_names:
+        backend.motion.enable(name)
+    return run_until(backend, lambda fb: all(f.enabled for f in fb.values()))
