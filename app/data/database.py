@@ -47,6 +47,7 @@ from app.data.errors import (
     RecipeValidationError,
     RecordError,
     SchemaVersionError,
+    StorageError,
 )
 from app.data.parameters import (
     DEFAULT_PARAMETERS,
@@ -238,7 +239,7 @@ class Database:
                 clock if clock is not None else (lambda: datetime.now(UTC)),
             )
             database._prepare((samples_path or sample_recipes_path()) if load_samples else None)
-        except sqlite3.DatabaseError as exc:
+        except (sqlite3.DatabaseError, StorageError) as exc:
             connection.close()
             raise DatabaseOpenError(
                 f"{db_path}: not a usable stave-jointer database ({exc})"
@@ -350,18 +351,24 @@ class Database:
 
     @contextmanager
     def _write(self) -> Iterator[sqlite3.Connection]:
-        """One write transaction: committed if the block ends, rolled back if it raises."""
-        self._conn.execute("BEGIN IMMEDIATE")
+        """One write transaction: committed if the block ends, rolled back if it raises.
+
+        A failure of SQLite itself (disk full, I/O error, another writer holding the lock for
+        longer than the busy timeout) becomes StorageError, so callers handle one family of
+        exceptions; refusals raised inside the block pass through unchanged.
+        """
+        try:
+            self._conn.execute("BEGIN IMMEDIATE")
+        except sqlite3.Error as exc:
+            raise StorageError(f"{self._path}: cannot start a write ({exc})") from exc
         try:
             yield self._conn
-        except BaseException:
-            self._conn.execute("ROLLBACK")
-            raise
-        try:
             self._conn.execute("COMMIT")
-        except BaseException:
+        except BaseException as exc:
             if self._conn.in_transaction:
                 self._conn.execute("ROLLBACK")
+            if isinstance(exc, sqlite3.Error) and not isinstance(exc, sqlite3.ProgrammingError):
+                raise StorageError(f"{self._path}: write not stored ({exc})") from exc
             raise
 
     def _now(self) -> str:
@@ -489,11 +496,19 @@ class Database:
         return _recipe_from_row(row)
 
     def get_recipe_by_name(self, name: str) -> Recipe | None:
-        """The recipe with this name (letter case ignored), or None."""
-        row = self._conn.execute(
-            f"SELECT {_RECIPE_COLUMNS} FROM recipes WHERE name = ?", (name.strip(),)
-        ).fetchone()
-        return None if row is None else _recipe_from_row(row)
+        """The recipe with this name (letter case ignored, accented letters too), or None."""
+        recipe_id = self._id_of_name(self._conn, name)
+        return None if recipe_id is None else self.get_recipe(recipe_id)
+
+    @staticmethod
+    def _id_of_name(conn: sqlite3.Connection, name: str) -> int | None:
+        """Names compare with str.casefold ("PIÈCE" is "pièce"); SQLite's NOCASE knows ASCII
+        only, so the comparison is done here (a few hundred names at most)."""
+        wanted = name.strip().casefold()
+        for row in conn.execute("SELECT id, name FROM recipes"):
+            if str(row["name"]).casefold() == wanted:
+                return int(row["id"])
+        return None
 
     def save_recipe(self, recipe: Recipe, user: User) -> Recipe:
         """Insert (``id`` None) or update a recipe; returns it as stored, with its id.
@@ -514,13 +529,11 @@ class Database:
             actor = self.check_role(user, RECIPE_EDIT_ROLE, "changing recipes")
             now = self._now()
             for recipe in recipes:
-                clash = conn.execute(
-                    "SELECT id FROM recipes WHERE name = ?", (recipe.name,)
-                ).fetchone()
-                if clash is not None and int(clash["id"]) != recipe.id:
+                clash = self._id_of_name(conn, recipe.name)
+                if clash is not None and clash != recipe.id:
                     allowed = "a name no other recipe has"
                     message = (
-                        f"name = {recipe.name!r} is already used by recipe {clash['id']}: "
+                        f"name = {recipe.name!r} is already used by recipe {clash}: "
                         f"allowed {allowed}"
                     )
                     error = FieldError("name", recipe.name, allowed, message)

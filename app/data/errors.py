@@ -50,6 +50,11 @@ class PinError(DataError, ValueError):
     """A PIN was refused (format, or already used by another user)."""
 
 
+class StorageError(DataError):
+    """SQLite could not complete a write (disk full, I/O error, locked too long); nothing of
+    that write was stored."""
+
+
 class DatabaseOpenError(DataError):
     """The file cannot be used as this application's database (message says why)."""
 

@@ -21,6 +21,7 @@ from app.data.errors import (
     RecipeValidationError,
     RecordError,
     SchemaVersionError,
+    StorageError,
 )
 from app.data.paths import DATABASE_PATH_ENV
 from app.data.recipe import Recipe, TiltMode, recipe_from_mapping
@@ -42,9 +43,7 @@ from .test_recipe import make_recipe
 T0 = datetime(2024, 5, 2, 6, 0, tzinfo=UTC)
 
 
-def piece(
-    minutes: float, result: PieceResult = PieceResult.OK, **changes: object
-) -> ProductionRecord:
+def piece(minutes: float, **changes: object) -> ProductionRecord:
     record = ProductionRecord(
         time=T0 + timedelta(minutes=minutes),
         recipe_id=1,
@@ -53,7 +52,7 @@ def piece(
         d_mm=12.5,
         r_mm=5005.2,
         cycle_time_s=88.5,
-        result=result,
+        result=PieceResult.OK,
         tilt_deg=9.2,
     )
     return replace(record, **changes)  # type: ignore[arg-type]
@@ -233,6 +232,10 @@ def test_names_are_unique_ignoring_letter_case(db: Database, users: dict[Role, U
     taken = db.list_recipes()[0].name
     with pytest.raises(RecipeValidationError, match="already used") as caught:
         db.save_recipe(make_recipe(name=taken.upper()), users[Role.OPERATOR])
+    accented = db.get_recipe_by_name("PIÈCE 228 L BOURGOGNE")  # not only ASCII letters
+    assert accented is not None and accented.name == "Pièce 228 l Bourgogne"
+    with pytest.raises(RecipeValidationError, match="already used"):
+        db.save_recipe(make_recipe(name="PIÈCE 228 l Bourgogne"), users[Role.OPERATOR])
     assert caught.value.errors[0].field == "name"
     with pytest.raises(RecipeValidationError, match="already used"):
         db.copy_recipe(db.list_recipes()[1].id or 0, taken, users[Role.OPERATOR])
@@ -313,9 +316,16 @@ def test_the_tables_refuse_what_the_code_would_never_write(db_path: Path) -> Non
 def test_pieces_are_recorded_listed_and_counted(db: Database) -> None:
     stored = [db.record_piece(piece(m)) for m in (0, 90, 180)]
     db.record_piece(
-        piece(200, PieceResult.REJECTED, width_mm=None, d_mm=None, r_mm=None, alarm_code="W_RANGE")
+        piece(
+            200,
+            result=PieceResult.REJECTED,
+            width_mm=None,
+            d_mm=None,
+            r_mm=None,
+            alarm_code="W_RANGE",
+        )
     )
-    db.record_piece(piece(300, PieceResult.ABORTED, alarm_code="ESTOP"))
+    db.record_piece(piece(300, result=PieceResult.ABORTED, alarm_code="ESTOP"))
     assert [r.id for r in stored] == [1, 2, 3]
     listed = db.list_production(T0, T0 + timedelta(days=1))
     assert listed[:3] == stored
@@ -474,3 +484,21 @@ def test_barrel_mode_recipes_round_trip(db: Database, users: dict[Role, User]) -
     stored = db.save_recipe(recipe, users[Role.OPERATOR])
     assert db.get_recipe(stored.id or 0) == replace(recipe, id=stored.id)
     assert isinstance(db.get_recipe(stored.id or 0), Recipe)
+
+
+def test_a_write_that_sqlite_cannot_complete_is_a_storage_error(
+    db_path: Path, users: dict[Role, User]
+) -> None:
+    """Another writer holding the lock past the busy timeout: refused, nothing half-stored."""
+    blocker = sqlite3.connect(db_path, isolation_level=None)
+    blocker.execute("BEGIN IMMEDIATE")
+    try:
+        with Database.open(db_path, busy_timeout_s=0.05) as database:
+            before = database.list_recipes()
+            with pytest.raises(StorageError, match="cannot start a write"):
+                database.save_recipe(make_recipe(name="Blocked"), users[Role.OPERATOR])
+            blocker.execute("ROLLBACK")
+            assert database.list_recipes() == before
+            database.save_recipe(make_recipe(name="Blocked"), users[Role.OPERATOR])  # now fine
+    finally:
+        blocker.close()
