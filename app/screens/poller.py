@@ -35,6 +35,11 @@ class SnapshotPoller(QObject):
         self._timer.setInterval(max(1, round(1000.0 / refresh_hz)))
         self._timer.timeout.connect(self.poll)
 
+    def set_interval_ms(self, interval_ms: int) -> None:
+        """Poll every ``interval_ms`` (0: whenever the event loop is idle, for tests and
+        benchmarks that run the simulated machine as fast as it goes)."""
+        self._timer.setInterval(max(0, interval_ms))
+
     def start(self) -> None:
         self._timer.start()
 

@@ -80,7 +80,7 @@ def _t(context: str, text: str) -> str:
 
 def state_text(state: MachineState | None) -> str:
     if state is None:
-        return _t("States", "NO MACHINE")
+        return QCoreApplication.translate("States", "NO MACHINE")
     return _t("States", _STATES[state])
 
 
@@ -129,10 +129,3 @@ def alarm_text(code: str, text: str) -> str:
 def parameter_text(english: str) -> str:
     """A parameter's description or group title from the data layer's catalogue."""
     return _t(PARAMETER_CONTEXT, english)
-
-
-def duration_words(seconds: float) -> str:
-    """Used in tooltips: "12 s", "3 min"."""
-    if seconds < 120:
-        return _t("Units", "%1 s").replace("%1", f"{seconds:.0f}")
-    return _t("Units", "%1 min").replace("%1", f"{seconds / 60:.0f}")

@@ -19,6 +19,10 @@ import pytest
 from PySide6.QtWidgets import QPushButton, QWidget
 
 from app.data.database import Database
+from app.machine.link import MachineLink
+from app.machine.states import MachineState
+from app.screens.main_window import MainWindow
+from tests.screens.helpers import click, wait_for
 
 HERE = Path(__file__).resolve().parent
 # The offscreen platform warns that it cannot propagate size hints whenever a top-level
@@ -68,21 +72,33 @@ def host(qtbot) -> QWidget:
     return widget
 
 
-def click(qtbot, button: QPushButton) -> None:
-    """Tap a button as a finger would (press and release inside it)."""
-    from PySide6.QtCore import Qt
-
-    assert button.isVisible(), f"{button.objectName()} is not visible"
-    assert button.isEnabled(), f"{button.objectName()} is disabled: {button.toolTip()}"
-    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
-
-
-def find_button(parent: QWidget, name: str) -> QPushButton:
-    button = parent.findChild(QPushButton, name)
-    assert button is not None, f"no button {name!r}"
-    return button
+@pytest.fixture
+def tap(qtbot) -> Callable[[QPushButton], None]:
+    """Tap a button as a finger would."""
+    return lambda button: click(qtbot, button)
 
 
 @pytest.fixture
-def tap(qtbot) -> Callable[[QPushButton], None]:
-    return lambda button: click(qtbot, button)
+def machine(db_path: Path) -> Iterator[MachineLink]:
+    """The real machine layer in-process on a simulated clock (advanced by each poll)."""
+    from app.config import load_config
+    from app.machine.local_link import LocalMachineLink
+
+    link = LocalMachineLink.create(load_config(), db_path, advance_per_poll_s=0.05)
+    yield link
+    link.close()
+
+
+@pytest.fixture
+def window(qtbot, machine: MachineLink, database: Database) -> MainWindow:
+    """The application window on that machine, 1024x768, polling as fast as it can."""
+    from app.screens.application import create_main_window
+
+    created = create_main_window(machine, database)
+    assert isinstance(created, MainWindow)
+    qtbot.addWidget(created)
+    created.resize(1024, 768)
+    created.show()
+    created.poller.set_interval_ms(0)  # run the simulated machine as fast as it goes
+    wait_for(qtbot, created, lambda s: s.state is not MachineState.POWER_UP)
+    return created

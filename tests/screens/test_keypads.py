@@ -8,7 +8,7 @@ from PySide6.QtCore import Qt
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad, parse_number
 from app.screens.widgets.overlay import top_overlay
-from tests.screens.conftest import find_button
+from tests.screens.helpers import find_button
 
 
 def type_keys(tap, keypad, keys: str) -> None:

@@ -1,0 +1,1689 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="en" sourcelanguage="en">
+<context>
+    <name>AlarmStates</name>
+    <message>
+        <location filename="../../app/screens/texts.py" line="+50" />
+        <location line="+8" />
+        <source>normal</source>
+        <translation>normal</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <location line="+8" />
+        <source>active, unacknowledged</source>
+        <translation>active, unacknowledged</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <location line="+8" />
+        <source>active, acknowledged</source>
+        <translation>active, acknowledged</translation>
+    </message>
+    <message>
+        <location line="-7" />
+        <location line="+8" />
+        <source>cleared, unacknowledged</source>
+        <translation>cleared, unacknowledged</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>shelved</source>
+        <translation>shelved</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>fault</source>
+        <translation>fault</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>warning</source>
+        <translation>warning</translation>
+    </message>
+</context>
+<context>
+    <name>AlarmText</name>
+    <message>
+        <location filename="catalogue_strings.py" line="+31" />
+        <source>Axis lost its home position</source>
+        <translation>Axis lost its home position</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Board removed during the cycle</source>
+        <translation>Board removed during the cycle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering device did not reach its sensor</source>
+        <translation>Centering device did not reach its sensor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamps did not reach their sensor</source>
+        <translation>Clamps did not reach their sensor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Communication with the drives or I/O lost</source>
+        <translation>Communication with the drives or I/O lost</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Device event</source>
+        <translation>Device event</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drive did not enable</source>
+        <translation>Drive did not enable</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drive fault</source>
+        <translation>Drive fault</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drive not enabled during motion</source>
+        <translation>Drive not enabled during motion</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Emergency stop</source>
+        <translation>Emergency stop</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Following error too large</source>
+        <translation>Following error too large</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guard open during motion</source>
+        <translation>Guard open during motion</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Homing did not complete</source>
+        <translation>Homing did not complete</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Internal error in the machine process</source>
+        <translation>Internal error in the machine process</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jog stopped: no refresh from the screen</source>
+        <translation>Jog stopped: no refresh from the screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Limit switch reached</source>
+        <translation>Limit switch reached</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Measured width not allowed for this recipe</source>
+        <translation>Measured width not allowed for this recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spindle did not start</source>
+        <translation>Spindle did not start</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spindle stopped while cutting</source>
+        <translation>Spindle stopped while cutting</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tool path could not be planned</source>
+        <translation>Tool path could not be planned</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tool path outside the axis travel</source>
+        <translation>Tool path outside the axis travel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Width gauge disconnected</source>
+        <translation>Width gauge disconnected</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Width gauge gave no reading</source>
+        <translation>Width gauge gave no reading</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Width gauge reading not understood</source>
+        <translation>Width gauge reading not understood</translation>
+    </message>
+</context>
+<context>
+    <name>AlarmsScreen</name>
+    <message>
+        <location filename="../../app/screens/alarms_screen.py" line="+159" />
+        <source>Alarms</source>
+        <translation>Alarms</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Active alarms</source>
+        <translation>Active alarms</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acknowledge all</source>
+        <translation>Acknowledge all</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Reset machine</source>
+        <translation>Reset machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>No active alarms.</source>
+        <translation>No active alarms.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>History</source>
+        <translation>History</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>1 hour</source>
+        <translation>1 hour</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>24 hours</source>
+        <translation>24 hours</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>7 days</source>
+        <translation>7 days</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>All</source>
+        <translation>All</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Code: %1</source>
+        <translation>Code: %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+3" />
+        <source>all</source>
+        <translation>all</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Source: %1</source>
+        <translation>Source: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+10" />
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <location line="-9" />
+        <location line="+10" />
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <location line="-9" />
+        <location line="+10" />
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <location line="-9" />
+        <location line="+10" />
+        <location line="+89" />
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <location line="-98" />
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Change</source>
+        <translation>Change</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <location line="+51" />
+        <source>Acknowledge</source>
+        <translation>Acknowledge</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>All codes</source>
+        <translation>All codes</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Alarm code</source>
+        <translation>Alarm code</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>All sources</source>
+        <translation>All sources</translation>
+    </message>
+</context>
+<context>
+    <name>ChoiceOverlay</name>
+    <message>
+        <location filename="../../app/screens/widgets/dialogs.py" line="+126" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>ConfirmOverlay</name>
+    <message>
+        <location line="-70" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>FileChooser</name>
+    <message>
+        <location filename="../../app/screens/widgets/file_chooser.py" line="+90" />
+        <source>▲ Up</source>
+        <translation>▲ Up</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Home</source>
+        <translation>Home</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Save here</source>
+        <translation>Save here</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Open</source>
+        <translation>Open</translation>
+    </message>
+    <message>
+        <location line="+60" />
+        <source>File name</source>
+        <translation>File name</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>A file name cannot contain '/'.</source>
+        <translation>A file name cannot contain '/'.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The file name must end in .json or .csv.</source>
+        <translation>The file name must end in .json or .csv.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Choose a file first.</source>
+        <translation>Choose a file first.</translation>
+    </message>
+</context>
+<context>
+    <name>FractionKeypad</name>
+    <message>
+        <location filename="../../app/screens/widgets/keypad.py" line="+342" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+51" />
+        <source>Enter both the numerator and the denominator.</source>
+        <translation>Enter both the numerator and the denominator.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The denominator must not be 0.</source>
+        <translation>The denominator must not be 0.</translation>
+    </message>
+</context>
+<context>
+    <name>MachineText</name>
+    <message>
+        <location filename="catalogue_strings.py" line="-48" />
+        <source>a cycle is already running</source>
+        <translation>a cycle is already running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>already in manual mode</source>
+        <translation>already in manual mode</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axes are not homed: home the machine first</source>
+        <translation>axes are not homed: home the machine first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>close the guard first</source>
+        <translation>close the guard first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>leave manual mode first</source>
+        <translation>leave manual mode first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is busy (automatic): stop it first</source>
+        <translation>machine is busy (automatic): stop it first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is busy (homing): stop it first</source>
+        <translation>machine is busy (homing): stop it first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is busy (stopping): stop it first</source>
+        <translation>machine is busy (stopping): stop it first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is in emergency stop: press Reset first</source>
+        <translation>machine is in emergency stop: press Reset first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is in error: press Reset first</source>
+        <translation>machine is in error: press Reset first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>machine is still starting up</source>
+        <translation>machine is still starting up</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no connection to the machine</source>
+        <translation>no connection to the machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not in manual mode</source>
+        <translation>not in manual mode</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not possible while homing</source>
+        <translation>not possible while homing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not possible while not homed</source>
+        <translation>not possible while not homed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not possible while stopping</source>
+        <translation>not possible while stopping</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>nothing is moving</source>
+        <translation>nothing is moving</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>nothing to reset</source>
+        <translation>nothing to reset</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>only on the simulated machine</source>
+        <translation>only on the simulated machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>open the Manual screen to jog</source>
+        <translation>open the Manual screen to jog</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>release the emergency stop first</source>
+        <translation>release the emergency stop first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>reset done</source>
+        <translation>reset done</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>select a recipe first</source>
+        <translation>select a recipe first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>unknown command</source>
+        <translation>unknown command</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>wait until the cycle has ended</source>
+        <translation>wait until the cycle has ended</translation>
+    </message>
+</context>
+<context>
+    <name>MainScreen</name>
+    <message>
+        <location filename="../../app/screens/main_screen.py" line="+187" />
+        <source>Main</source>
+        <translation>Main</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Recipe</source>
+        <translation>Recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose recipe…</source>
+        <translation>Choose recipe…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Previous recipe</source>
+        <translation>Previous recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next recipe</source>
+        <translation>Next recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>▶  START</source>
+        <translation>▶  START</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>■  STOP</source>
+        <translation>■  STOP</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home</source>
+        <translation>Home</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Put a board in (simulation)</source>
+        <translation>Put a board in (simulation)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>New
+shift</source>
+        <translation>New
+shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pieces this shift</source>
+        <translation>Pieces this shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pieces total</source>
+        <translation>Pieces total</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Last width</source>
+        <translation>Last width</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Last cycle</source>
+        <translation>Last cycle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Elapsed</source>
+        <translation>Elapsed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remaining</source>
+        <translation>Remaining</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>NOT HOMED</source>
+        <translation>NOT HOMED</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>There are no recipes yet: create one on Recipes.</source>
+        <translation>There are no recipes yet: create one on Recipes.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Choose a recipe</source>
+        <translation>Choose a recipe</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>New shift</source>
+        <translation>New shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start counting the pieces of a new shift from 0? The total count is kept.</source>
+        <translation>Start counting the pieces of a new shift from 0? The total count is kept.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start new shift</source>
+        <translation>Start new shift</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>No recipe selected</source>
+        <translation>No recipe selected</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>No. %1</source>
+        <translation>No. %1</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>No cycle running</source>
+        <translation>No cycle running</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../../app/screens/main_window.py" line="+160" />
+        <source>(+%1 more)</source>
+        <translation>(+%1 more)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+114" />
+        <source>Alarms</source>
+        <translation>Alarms</translation>
+    </message>
+    <message>
+        <location line="-107" />
+        <source>The machine is not running.</source>
+        <translation>The machine is not running.</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <location line="+4" />
+        <source>Log out</source>
+        <translation>Log out</translation>
+    </message>
+    <message>
+        <location line="-3" />
+        <source>Log out %1 and go back to the operator level?</source>
+        <translation>Log out %1 and go back to the operator level?</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Log in: enter your PIN</source>
+        <translation>Log in: enter your PIN</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Wrong PIN.</source>
+        <translation>Wrong PIN.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>This needs the %1 level; %2 is %3.</source>
+        <translation>This needs the %1 level; %2 is %3.</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>This needs the %1 level: enter a PIN</source>
+        <translation>This needs the %1 level: enter a PIN</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Logged in: %1 (%2)</source>
+        <translation>Logged in: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <location line="+22" />
+        <source>Language</source>
+        <translation>Language</translation>
+    </message>
+    <message>
+        <location line="-10" />
+        <source>Main</source>
+        <translation>Main</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Recipes</source>
+        <translation>Recipes</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <location line="+41" />
+        <location line="+2" />
+        <source>Shut down</source>
+        <translation>Shut down</translation>
+    </message>
+    <message>
+        <location line="-42" />
+        <source>Log in or out</source>
+        <translation>Log in or out</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Stave jointer</source>
+        <translation>Stave jointer</translation>
+    </message>
+    <message>
+        <location line="+38" />
+        <source>Stop the machine safely and close the program?</source>
+        <translation>Stop the machine safely and close the program?</translation>
+    </message>
+</context>
+<context>
+    <name>ManualScreen</name>
+    <message>
+        <location filename="../../app/screens/manual_screen.py" line="+206" />
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Enter manual mode</source>
+        <translation>Enter manual mode</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt</source>
+        <translation>Tilt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Continuous</source>
+        <translation>Continuous</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Step size (mm for X-Y, ° for tilt)</source>
+        <translation>Step size (mm for X-Y, ° for tilt)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jog speed and acceleration</source>
+        <translation>Jog speed and acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Speed</source>
+        <translation>Speed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration</source>
+        <translation>Acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home X</source>
+        <translation>Home X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home Y</source>
+        <translation>Home Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home Z</source>
+        <translation>Home Z</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home all</source>
+        <translation>Home all</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>NOT HOMED</source>
+        <translation>NOT HOMED</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Waiting for the machine…</source>
+        <translation>Waiting for the machine…</translation>
+    </message>
+    <message>
+        <location line="+51" />
+        <source>Jog speed %1</source>
+        <translation>Jog speed %1</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Jog acceleration %1</source>
+        <translation>Jog acceleration %1</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>Manual mode: hold a button to jog.</source>
+        <translation>Manual mode: hold a button to jog.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Not in manual mode.</source>
+        <translation>Not in manual mode.</translation>
+    </message>
+    <message>
+        <location line="+34" />
+        <source>Open clamps</source>
+        <translation>Open clamps</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Close clamps</source>
+        <translation>Close clamps</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Spindle OFF</source>
+        <translation>Spindle OFF</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Spindle ON</source>
+        <translation>Spindle ON</translation>
+    </message>
+</context>
+<context>
+    <name>MessageOverlay</name>
+    <message>
+        <location filename="../../app/screens/widgets/dialogs.py" line="+25" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+</context>
+<context>
+    <name>NumberKeypad</name>
+    <message>
+        <location filename="../../app/screens/widgets/keypad.py" line="-245" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Allowed: whole number from %1 to %2%3</source>
+        <translation>Allowed: whole number from %1 to %2%3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Allowed: %1 to %2%3, or empty</source>
+        <translation>Allowed: %1 to %2%3, or empty</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Allowed: %1 to %2%3</source>
+        <translation>Allowed: %1 to %2%3</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>Enter a number. %1</source>
+        <translation>Enter a number. %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1%2 is outside the allowed range.</source>
+        <translation>%1%2 is outside the allowed range.</translation>
+    </message>
+</context>
+<context>
+    <name>Parameters</name>
+    <message>
+        <location filename="catalogue_strings.py" line="+25" />
+        <source>Distance beyond the board's right end where the tilt changes sides</source>
+        <translation>Distance beyond the board's right end where the tilt changes sides</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Height of the tilt pivot above the table (Hm)</source>
+        <translation>Height of the tilt pivot above the table (Hm)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home position of X</source>
+        <translation>Home position of X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home position of Y</source>
+        <translation>Home position of Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Home tilt of the router (Z)</source>
+        <translation>Home tilt of the router (Z)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Lead-in before x = 0 and lead-out after x = L (longer than the tool radius)</source>
+        <translation>Lead-in before x = 0 and lead-out after x = L (longer than the tool radius)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Length of one shift</source>
+        <translation>Length of one shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Number of shifts per day</source>
+        <translation>Number of shifts per day</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>P0: machine X of the stave's left end</source>
+        <translation>P0: machine X of the stave's left end</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>P0: machine Y of the table centre line</source>
+        <translation>P0: machine Y of the table centre line</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Radius of the router cutter</source>
+        <translation>Radius of the router cutter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: highest X</source>
+        <translation>Soft limit: highest X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: highest Y</source>
+        <translation>Soft limit: highest Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: highest tilt</source>
+        <translation>Soft limit: highest tilt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: lowest X</source>
+        <translation>Soft limit: lowest X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: lowest Y</source>
+        <translation>Soft limit: lowest Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Soft limit: lowest tilt</source>
+        <translation>Soft limit: lowest tilt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start of the first shift of the day, hours after midnight (6.5 = 06:30)</source>
+        <translation>Start of the first shift of the day, hours after midnight (6.5 = 06:30)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt (Z) acceleration</source>
+        <translation>Tilt (Z) acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt (Z) jerk limit</source>
+        <translation>Tilt (Z) jerk limit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt (Z) jog acceleration</source>
+        <translation>Tilt (Z) jog acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt (Z) jog speed</source>
+        <translation>Tilt (Z) jog speed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tilt (Z) speed</source>
+        <translation>Tilt (Z) speed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tolerance of the stave-side solver (root of the cubic in D)</source>
+        <translation>Tolerance of the stave-side solver (root of the cubic in D)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y acceleration</source>
+        <translation>X-Y acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y cutting feed</source>
+        <translation>X-Y cutting feed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y jerk limit</source>
+        <translation>X-Y jerk limit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y jog acceleration</source>
+        <translation>X-Y jog acceleration</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y jog speed</source>
+        <translation>X-Y jog speed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>X-Y speed of non-cutting moves</source>
+        <translation>X-Y speed of non-cutting moves</translation>
+    </message>
+</context>
+<context>
+    <name>PinPad</name>
+    <message>
+        <location filename="../../app/screens/widgets/keypad.py" line="+253" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>Enter your PIN.</source>
+        <translation>Enter your PIN.</translation>
+    </message>
+</context>
+<context>
+    <name>RecipesScreen</name>
+    <message>
+        <location filename="../../app/screens/recipes_screen.py" line="+267" />
+        <location line="+51" />
+        <source>Recipes</source>
+        <translation>Recipes</translation>
+    </message>
+    <message>
+        <location line="-47" />
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Length L</source>
+        <translation>Length L</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Thickness H</source>
+        <translation>Thickness H</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Length ratio L1 : L</source>
+        <translation>Length ratio L1 : L</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Width ratio W1 : W</source>
+        <translation>Width ratio W1 : W</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+59" />
+        <source>Tilt</source>
+        <translation>Tilt</translation>
+    </message>
+    <message>
+        <location line="-58" />
+        <source>Tilt α</source>
+        <translation>Tilt α</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Barrel diameter</source>
+        <translation>Barrel diameter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Barrel perimeter</source>
+        <translation>Barrel perimeter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>(optional)</source>
+        <translation>(optional)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>0 to below 1/2</source>
+        <translation>0 to below 1/2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>above 0, below 1</source>
+        <translation>above 0, below 1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>1 to %1 characters</source>
+        <translation>1 to %1 characters</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>optional</source>
+        <translation>optional</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>fixed, or from the barrel</source>
+        <translation>fixed, or from the barrel</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>New</source>
+        <translation>New</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Copy</source>
+        <translation>Copy</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+384" />
+        <source>Delete</source>
+        <translation>Delete</translation>
+    </message>
+    <message>
+        <location line="-383" />
+        <location line="+433" />
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <location line="-432" />
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save</source>
+        <translation>Save</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+89" />
+        <source>Discard</source>
+        <translation>Discard</translation>
+    </message>
+    <message>
+        <location line="-88" />
+        <source>Use on machine</source>
+        <translation>Use on machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fixed</source>
+        <translation>Fixed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>From barrel</source>
+        <translation>From barrel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Preview</source>
+        <translation>Preview</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+239" />
+        <source>Board width for the preview</source>
+        <translation>Board width for the preview</translation>
+    </message>
+    <message>
+        <location line="-237" />
+        <source>Head W1</source>
+        <translation>Head W1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Rise D</source>
+        <translation>Rise D</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Radius R</source>
+        <translation>Radius R</translation>
+    </message>
+    <message>
+        <location line="+76" />
+        <source>Unsaved changes</source>
+        <translation>Unsaved changes</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Discard the changes to %1?</source>
+        <translation>Discard the changes to %1?</translation>
+    </message>
+    <message>
+        <location line="+74" />
+        <source>The name %1 is already used by recipe %2.</source>
+        <translation>The name %1 is already used by recipe %2.</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>No recipe</source>
+        <translation>No recipe</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+133" />
+        <source>New recipe</source>
+        <translation>New recipe</translation>
+    </message>
+    <message>
+        <location line="-131" />
+        <source>Recipe %1</source>
+        <translation>Recipe %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>(changed, not saved)</source>
+        <translation>(changed, not saved)</translation>
+    </message>
+    <message>
+        <location line="+89" />
+        <source>Not saved</source>
+        <translation>Not saved</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>No user account to save as.</source>
+        <translation>No user account to save as.</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+3" />
+        <source>Recipe not saved</source>
+        <translation>Recipe not saved</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Recipe %1 saved.</source>
+        <translation>Recipe %1 saved.</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Recipe %1 selected.</source>
+        <translation>Recipe %1 selected.</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>New recipe %1</source>
+        <translation>New recipe %1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Name of the copy</source>
+        <translation>Name of the copy</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 copy</source>
+        <translation>%1 copy</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Choose a new name.</source>
+        <translation>Choose a new name.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Not copied</source>
+        <translation>Not copied</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Recipe %1 created.</source>
+        <translation>Recipe %1 created.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Delete recipe</source>
+        <translation>Delete recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Delete recipe %1 (%2)? Its last version stays in the recipe history.</source>
+        <translation>Delete recipe %1 (%2)? Its last version stays in the recipe history.</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Not deleted</source>
+        <translation>Not deleted</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Recipe %1 deleted.</source>
+        <translation>Recipe %1 deleted.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Import recipes</source>
+        <translation>Import recipes</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Import failed</source>
+        <translation>Import failed</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>… and %1 more lines</source>
+        <translation>… and %1 more lines</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Export recipes</source>
+        <translation>Export recipes</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Export failed</source>
+        <translation>Export failed</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 recipes written to %2.</source>
+        <translation>%1 recipes written to %2.</translation>
+    </message>
+</context>
+<context>
+    <name>Roles</name>
+    <message>
+        <location filename="../../app/screens/texts.py" line="-7" />
+        <source>Operator</source>
+        <translation>Operator</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Technician</source>
+        <translation>Technician</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Service</source>
+        <translation>Service</translation>
+    </message>
+</context>
+<context>
+    <name>States</name>
+    <message>
+        <location line="-43" />
+        <source>STARTING UP</source>
+        <translation>STARTING UP</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>NOT HOMED</source>
+        <translation>NOT HOMED</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>HOMING</source>
+        <translation>HOMING</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>READY</source>
+        <translation>READY</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>RUNNING</source>
+        <translation>RUNNING</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>MANUAL</source>
+        <translation>MANUAL</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>STOPPING</source>
+        <translation>STOPPING</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>FAULT</source>
+        <translation>FAULT</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>EMERGENCY STOP</source>
+        <translation>EMERGENCY STOP</translation>
+    </message>
+    <message>
+        <location line="+50" />
+        <source>NO MACHINE</source>
+        <translation>NO MACHINE</translation>
+    </message>
+</context>
+<context>
+    <name>Steps</name>
+    <message>
+        <location line="-46" />
+        <source>Waiting for a board</source>
+        <translation>Waiting for a board</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering</source>
+        <translation>Centering</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamping</source>
+        <translation>Clamping</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Measuring the width</source>
+        <translation>Measuring the width</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Starting the spindle</source>
+        <translation>Starting the spindle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cutting side A</source>
+        <translation>Cutting side A</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Repositioning and tilting</source>
+        <translation>Repositioning and tilting</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cutting side B</source>
+        <translation>Cutting side B</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Returning</source>
+        <translation>Returning</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Unclamping</source>
+        <translation>Unclamping</translation>
+    </message>
+</context>
+<context>
+    <name>SystemScreen</name>
+    <message>
+        <location filename="../../app/screens/system_screen.py" line="+205" />
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Home position</source>
+        <translation>Home position</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tool and machine</source>
+        <translation>Tool and machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start position P0</source>
+        <translation>Start position P0</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Automatic speeds</source>
+        <translation>Automatic speeds</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tool path</source>
+        <translation>Tool path</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Axis limits</source>
+        <translation>Axis limits</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jogging</source>
+        <translation>Jogging</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Shifts</source>
+        <translation>Shifts</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Change log</source>
+        <translation>Change log</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+26" />
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <location line="-19" />
+        <source>The system settings are locked.
+Log in as technician or service to change them.</source>
+        <translation>The system settings are locked.
+Log in as technician or service to change them.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Unlock with PIN</source>
+        <translation>Unlock with PIN</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Lock (log out)</source>
+        <translation>Lock (log out)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Change log of the system parameters</source>
+        <translation>Change log of the system parameters</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Old</source>
+        <translation>Old</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>New</source>
+        <translation>New</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</source>
+        <translation>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Clear injected faults</source>
+        <translation>Clear injected faults</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Put a board in</source>
+        <translation>Put a board in</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>needs %1</source>
+        <translation>needs %1</translation>
+    </message>
+    <message>
+        <location line="+44" />
+        <source>Log in to change parameters.</source>
+        <translation>Log in to change parameters.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>%1 set to %2 (logged).</source>
+        <translation>%1 set to %2 (logged).</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Fault injected: %1</source>
+        <translation>Fault injected: %1</translation>
+    </message>
+</context>
+<context>
+    <name>TextKeyboard</name>
+    <message>
+        <location filename="../../app/screens/widgets/keyboard.py" line="+110" />
+        <source>Space</source>
+        <translation>Space</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>At most %1 characters.</source>
+        <translation>At most %1 characters.</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>Enter a text.</source>
+        <translation>Enter a text.</translation>
+    </message>
+</context>
+</TS>

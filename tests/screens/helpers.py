@@ -1,0 +1,53 @@
+"""Helpers the screen tests share: tap a button, find one, wait for the machine."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QPushButton, QWidget
+
+from app.machine.snapshot import MachineSnapshot
+from app.machine.states import MachineState
+from app.screens.main_window import MainWindow
+
+WAIT_MS = 60_000
+
+
+def click(qtbot, button: QPushButton) -> None:
+    """Tap a button as a finger would (press and release inside it)."""
+    assert button.isVisible(), f"{button.objectName()} is not visible"
+    assert button.isEnabled(), f"{button.objectName()} is disabled: {button.toolTip()}"
+    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
+
+
+def find_button(parent: QWidget, name: str) -> QPushButton:
+    button = parent.findChild(QPushButton, name)
+    assert button is not None, f"no button {name!r}"
+    return button
+
+
+def wait_for(
+    qtbot, window: MainWindow, done: Callable[[MachineSnapshot], bool], timeout_ms: int = WAIT_MS
+) -> MachineSnapshot:
+    """Let the screen poll the machine until ``done`` holds for its snapshot."""
+    qtbot.waitUntil(
+        lambda: window.poller.snapshot is not None and done(window.poller.snapshot),
+        timeout=timeout_ms,
+    )
+    snapshot = window.poller.snapshot
+    assert snapshot is not None
+    return snapshot
+
+
+def home_from_main_screen(qtbot, window: MainWindow, tap) -> MachineSnapshot:
+    """Press Home on the main screen if the axes are not homed, and wait until ready."""
+    snapshot = window.poller.snapshot
+    assert snapshot is not None
+    if not snapshot.all_homed:
+        window.show_screen("main")
+        home = find_button(window, "homeButton")
+        wait_for(qtbot, window, lambda s: not s.allowed.get("Home"))
+        tap(home)
+        snapshot = wait_for(qtbot, window, lambda s: s.state is MachineState.READY and s.all_homed)
+    return snapshot

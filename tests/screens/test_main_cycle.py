@@ -1,0 +1,106 @@
+"""Main screen, operated as a person would: pick a recipe, press Start, put a board in, watch
+a whole simulated cycle finish and the counter rise."""
+
+from __future__ import annotations
+
+from app.machine.states import MachineState
+from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.lamp import LampColor
+from tests.screens.helpers import find_button, home_from_main_screen, wait_for
+
+
+def test_start_is_refused_with_a_reason_until_homed(window) -> None:
+    snapshot = window.poller.snapshot
+    start = find_button(window, "startButton")
+    if not snapshot.all_homed:
+        assert not start.isEnabled()
+        assert start.toolTip()  # says why
+        main = window.screen("main")
+        assert main.hint_label.text() == start.toolTip()
+        for axis in ("X", "Y"):
+            if not snapshot.axis(axis).homed:
+                readout = getattr(main, f"axis_{axis.lower()}")
+                assert readout.value_label.property("homed") == "false"
+                assert readout.tag_label.isVisibleTo(main)
+
+
+def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, tap) -> None:
+    main = window.screen("main")
+    home_from_main_screen(qtbot, window, tap)
+    recipes = database.list_recipes()
+    assert len(recipes) >= 2
+    for readout in (main.axis_x, main.axis_y, main.axis_z):
+        assert readout.value_label.property("homed") == "true"
+
+    # Pick the second recipe from the list.
+    tap(find_button(window, "recipeList"))
+    overlay = window.overlay()
+    assert isinstance(overlay, ChoiceOverlay)
+    tap(overlay.buttons[1])
+    wait_for(qtbot, window, lambda s: s.recipe_id == recipes[1].id)
+    assert main.number_label.text() == f"No. {recipes[1].id}"
+    assert main.name_label.text() == recipes[1].name
+    # Next and previous step through the list.
+    tap(find_button(window, "nextRecipe"))
+    expected = recipes[2 % len(recipes)].id
+    wait_for(qtbot, window, lambda s: s.recipe_id == expected)
+    tap(find_button(window, "prevRecipe"))
+    wait_for(qtbot, window, lambda s: s.recipe_id == recipes[1].id)
+
+    before = window.poller.snapshot
+    assert before.state is MachineState.READY
+    start = find_button(window, "startButton")
+    wait_for(qtbot, window, lambda s: not s.allowed.get("Start"))
+    tap(start)
+    wait_for(qtbot, window, lambda s: s.state is MachineState.AUTOMATIC)
+    assert window.top_bar.lamp.color is LampColor.GREEN
+    assert not start.isEnabled() and find_button(window, "stopButton").isEnabled()
+    assert main.step_label.text() == "Waiting for a board"
+    tap(find_button(window, "loadBoardButton"))  # the simulated operator's hands
+
+    running = wait_for(
+        qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A"
+    )
+    assert main.plan_view.plan_id == running.plan_id > 0  # the live plan is drawn
+    assert main.elapsed_label.text() != "—" and main.remaining_label.text() != "—"
+    finished = wait_for(qtbot, window, lambda s: s.pieces_shift == before.pieces_shift + 1)
+    assert finished.pieces_total == before.pieces_total + 1
+    assert main.shift_tile.value_label.text() == str(before.pieces_shift + 1)
+    assert main.total_tile.value_label.text() == str(before.pieces_total + 1)
+    assert main.width_tile.value_label.text().endswith("mm")
+    assert ":" in main.cycle_time_tile.value_label.text()
+
+
+def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
+    home_from_main_screen(qtbot, window, tap)
+    recipe_id = database.list_recipes()[0].id
+    tap(find_button(window, "recipeList"))
+    tap(window.overlay().buttons[0])
+    wait_for(qtbot, window, lambda s: s.recipe_id == recipe_id and not s.allowed.get("Start"))
+    tap(find_button(window, "startButton"))
+    tap(find_button(window, "loadBoardButton"))
+    wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A")
+    tap(find_button(window, "stopButton"))
+    wait_for(qtbot, window, lambda s: s.state is not MachineState.AUTOMATIC)
+    stopped = wait_for(qtbot, window, lambda s: s.state is not MachineState.STOPPING)
+    assert stopped.pieces_shift == 0
+
+
+def test_new_shift_asks_first(qtbot, window, tap) -> None:
+    tap(find_button(window, "resetShiftButton"))
+    overlay = window.overlay()
+    assert isinstance(overlay, ConfirmOverlay)
+    tap(overlay.cancel_button)
+    assert window.overlay() is None
+
+
+def test_shut_down_asks_then_closes_the_link(qtbot, window, machine, tap) -> None:
+    tap(find_button(window, "nav_shutdown"))
+    overlay = window.overlay()
+    assert isinstance(overlay, ConfirmOverlay)
+    tap(overlay.cancel_button)
+    assert machine.alive()
+    tap(find_button(window, "nav_shutdown"))
+    with qtbot.waitSignal(window.shutdownRequested):
+        tap(window.overlay().confirm_button)
+    assert not machine.alive()

@@ -1,0 +1,203 @@
+"""Manual (hold and release a jog button, step jog), Alarms (acknowledge, reset, history),
+System (PIN lock, a logged change) and the language switch, operated as a person would."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+
+from app.data.users import Role
+from app.machine.snapshot import AlarmState
+from app.machine.states import MachineState
+from app.screens.widgets.dialogs import ChoiceOverlay
+from app.screens.widgets.keypad import NumberKeypad, PinPad
+from tests.screens.helpers import find_button, wait_for
+
+
+def keys(tap, overlay, text: str) -> None:
+    for key in text:
+        tap(find_button(overlay, f"key_{key}"))
+
+
+def log_in(window, tap, pin: str) -> None:
+    tap(find_button(window, "userButton"))
+    pad = window.overlay()
+    assert isinstance(pad, PinPad)
+    keys(tap, pad, pin)
+    tap(find_button(pad, "okButton"))
+    assert window.overlay() is None
+
+
+# -- manual ----------------------------------------------------------------------------------
+
+
+def open_manual(qtbot, window, tap):
+    tap(find_button(window, "nav_manual"))
+    return wait_for(qtbot, window, lambda s: s.state is MachineState.MANUAL)
+
+
+def test_hold_and_release_a_jog_button(qtbot, window, machine, tap) -> None:
+    start = open_manual(qtbot, window, tap)
+    # Machine time at about real time, so the hold's refresh (every 0.1 s of wall time)
+    # is what keeps the jog alive against the machine's dead-man timer.
+    machine.advance_per_poll_s = 0.002
+    window.poller.set_interval_ms(2)
+    button = find_button(window, "jog_Xplus")
+    wait_for(qtbot, window, lambda s: not s.allowed.get("JogContinuous"))
+    x0 = start.axis("X").position
+    qtbot.mousePress(button, Qt.MouseButton.LeftButton)
+    assert button.held
+    held = wait_for(qtbot, window, lambda s: s.axis("X").position > x0 + 2.0)
+    assert not any(a.code == "W101" for a in held.alarms), "the refresh kept the jog alive"
+    qtbot.mouseRelease(button, Qt.MouseButton.LeftButton)
+    assert not button.held
+    released_at = window.poller.snapshot.machine_time_s
+    settled = wait_for(qtbot, window, lambda s: s.machine_time_s > released_at + 1.0)
+    x_stop = settled.axis("X").position
+    later = wait_for(qtbot, window, lambda s: s.machine_time_s > settled.machine_time_s + 0.5)
+    assert later.axis("X").position == x_stop, "the axis stopped on release"
+    assert not any(a.code == "W101" for a in later.alarms)
+
+
+def test_step_jog_moves_by_the_step(qtbot, window, tap) -> None:
+    start = open_manual(qtbot, window, tap)
+    tap(find_button(window, "stepMode"))
+    tap(find_button(window, "step_10"))
+    wait_for(qtbot, window, lambda s: not s.allowed.get("JogStep"))
+    y0 = start.axis("Y").position
+    tap(find_button(window, "jog_Yplus"))
+    wait_for(qtbot, window, lambda s: abs(s.axis("Y").position - (y0 + 10.0)) < 0.01)
+
+
+def test_jog_speed_set_on_the_keypad(qtbot, window, tap) -> None:
+    open_manual(qtbot, window, tap)
+    tap(find_button(window, "jogXYSpeed"))
+    keypad = window.overlay()
+    assert isinstance(keypad, NumberKeypad)
+    keys(tap, keypad, "42")
+    tap(find_button(keypad, "okButton"))
+    wait_for(qtbot, window, lambda s: s.jog_xy[0] == 42.0)
+
+
+def test_leaving_the_manual_screen_leaves_manual_mode(qtbot, window, tap) -> None:
+    open_manual(qtbot, window, tap)
+    tap(find_button(window, "nav_main"))
+    wait_for(qtbot, window, lambda s: s.state is not MachineState.MANUAL)
+
+
+# -- alarms ----------------------------------------------------------------------------------
+
+
+def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
+    log_in(window, tap, "1234")
+    assert window.session.role is Role.TECHNICIAN
+    tap(find_button(window, "nav_system"))
+    tap(find_button(window, "group_simulation"))
+    tap(find_button(window, "inject_following_error"))
+    alarmed = wait_for(qtbot, window, lambda s: bool(s.alarms) and s.state is MachineState.ERROR)
+    alarm = alarmed.alarms[0]
+    assert window.banner.isVisible() and alarm.code in window.banner.text()
+    assert window.banner.property("severity") == "fault"
+
+    tap(window.banner)  # the banner leads to the Alarms screen
+    screen = window.screen("alarms")
+    assert window.current_screen is screen
+    assert screen.active_table.rowCount() == len(alarmed.alarms)
+    ack = screen.ack_button(alarm.alarm_id)
+    assert ack is not None
+    tap(ack)
+    wait_for(
+        qtbot,
+        window,
+        lambda s: all(
+            a.state is not AlarmState.ACTIVE_UNACKED
+            for a in s.alarms
+            if a.alarm_id == alarm.alarm_id
+        ),
+    )
+    assert screen.ack_button(alarm.alarm_id) is None
+
+    tap(find_button(window, "nav_system"))
+    tap(find_button(window, "clearFaults"))
+    tap(find_button(window, "nav_alarms"))
+    wait_for(qtbot, window, lambda s: not s.allowed.get("Reset"))
+    tap(find_button(window, "alarmsResetButton"))
+    wait_for(qtbot, window, lambda s: s.state is not MachineState.ERROR)
+    if window.poller.snapshot.unacknowledged_alarms:
+        tap(find_button(window, "ackAllButton"))
+    wait_for(qtbot, window, lambda s: not s.alarms)
+    assert not window.banner.isVisible()
+    screen.refresh_history()
+    assert screen.history_count >= 2  # raised, acknowledged, ... each a row
+    codes = {screen.history_table.item(r, 1).text() for r in range(screen.history_count)}
+    assert alarm.code in codes
+    tap(find_button(window, "period_hour"))
+    tap(find_button(window, "sourceFilter"))
+    choice = window.overlay()
+    assert isinstance(choice, ChoiceOverlay)
+    tap(next(b for b in choice.buttons if b.text() == alarm.source))
+    assert screen.history_count >= 1
+    assert all(
+        screen.history_table.item(r, 3).text() == alarm.source for r in range(screen.history_count)
+    )
+    window.session.logout()
+
+
+# -- system ----------------------------------------------------------------------------------
+
+
+def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -> None:
+    tap(find_button(window, "nav_system"))
+    screen = window.screen("system")
+    assert screen.body.currentWidget() is screen.locked_page
+    tap(find_button(window, "unlockButton"))
+    pad = window.overlay()
+    keys(tap, pad, "0000")
+    tap(find_button(pad, "okButton"))
+    assert pad.is_open and "Technician" in pad.error_label.text()
+    keys(tap, pad, "1234")
+    tap(find_button(pad, "okButton"))
+    assert screen.body.currentWidget() is screen.settings_page
+
+    tap(find_button(window, "group_tool"))
+    assert not find_button(window, "param_machine_height_mm").isEnabled()  # service only
+    tap(find_button(window, "param_tool_radius_mm"))
+    keypad = window.overlay()
+    assert isinstance(keypad, NumberKeypad)
+    keys(tap, keypad, "500")
+    tap(find_button(keypad, "okButton"))
+    assert keypad.is_open  # the catalogue allows 1 to 150 mm
+    tap(find_button(keypad, "key_clear"))
+    keys(tap, keypad, "30")
+    tap(find_button(keypad, "okButton"))
+    assert database.get_parameter("tool_radius_mm") == 30.0
+    change = database.parameter_history(name="tool_radius_mm")[0]
+    assert change.new_value == 30.0 and change.user_name == "technician"
+    assert find_button(window, "param_tool_radius_mm").text() == "30 mm"
+    tap(find_button(window, "group_log"))
+    assert screen.log_table.item(0, 1).text() == "tool_radius_mm"
+
+    tap(find_button(window, "lockButton"))
+    assert screen.body.currentWidget() is screen.locked_page
+
+
+# -- language --------------------------------------------------------------------------------
+
+
+def test_switching_to_slovenian_retranslates_the_visible_screen(qtbot, window, tap) -> None:
+    main = window.screen("main")
+    assert find_button(window, "nav_recipes").text() == "Recipes"
+    assert main.start_button.text().endswith("START")
+    tap(find_button(window, "languageButton"))
+    choice = window.overlay()
+    assert isinstance(choice, ChoiceOverlay)
+    tap(choice.buttons[1])  # Slovenščina
+    assert window.languages.language == "sl"
+    assert find_button(window, "nav_recipes").text() == "Recepti"
+    assert main.start_button.text().endswith("ZAGON")
+    assert main.shift_tile.caption_label.text() == "Kosov v izmeni"
+    assert window.top_bar.state_label.text() in ("NI REFERENCIRANO", "PRIPRAVLJEN")
+    assert find_button(window, "languageButton").text() == "SL"
+    tap(find_button(window, "languageButton"))
+    tap(window.overlay().buttons[0])
+    assert find_button(window, "nav_recipes").text() == "Recipes"
+    assert main.start_button.text().endswith("START")
