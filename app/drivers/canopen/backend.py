@@ -3,6 +3,8 @@
 The returned backend is not yet configured: the machine layer (or ``stave probe``) calls
 ``configure()`` and ``activate()`` on both devices. Nothing here opens the bus; the settings
 are checked at once, so a bad ``[backend.canopen]`` stops the start-up with a ConfigError.
+``extras["canopen"]`` is the shared :class:`CanopenBus`; its ``probe_report()`` is what
+``stave probe`` prints about the link.
 """
 
 from __future__ import annotations
@@ -20,5 +22,4 @@ def create_backend(config: MachineConfig) -> MachineBackend:
     bus = CanopenBus(settings)
     motion = CanopenMotion(bus, settings, config)
     io = CanopenIO(bus, settings)
-    return MachineBackend("canopen", motion, io,
-                          extras={"canopen_settings": settings, "canopen_bus": bus})
+    return MachineBackend("canopen", motion, io, extras={"canopen": bus})

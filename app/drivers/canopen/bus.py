@@ -20,7 +20,7 @@ import logging
 import threading
 import time
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 import can
@@ -76,6 +76,8 @@ class CanopenBus:
         self._thread_error: str = ""
         self.sync_seq = 0
         self.sync_is_feedback = False  # the latest SYNC was sent to refresh feedback
+        self.sync_time_s = 0.0  # monotonic time the latest SYNC was sent
+        self._answer_sources: list[Callable[[int], bool]] = []
 
     # ---- connection ----
     def acquire(self) -> None:
@@ -231,6 +233,7 @@ class CanopenBus:
             self.sync_seq += 1
             seq = self.sync_seq
             self.sync_is_feedback = feedback
+            self.sync_time_s = time.monotonic()
         self.send(0x80, b"")  # SYNC, COB-ID 0x80, no counter
         return seq
 
@@ -323,6 +326,40 @@ class CanopenBus:
             self._queues[owner].clear()
             self._shared.clear()
         return events
+
+    def add_answer_source(self, answered: Callable[[int], bool]) -> None:
+        """``answered(seq)``: True once every cyclic TPDO of a device answered SYNC ``seq``
+        (evaluated under the condition)."""
+        self._answer_sources.append(answered)
+
+    def remove_answer_source(self, answered: Callable[[int], bool]) -> None:
+        if answered in self._answer_sources:
+            self._answer_sources.remove(answered)
+
+    def wait_for_answers(self, timeout_s: float) -> bool:
+        """Wait until every node answered the latest SYNC. The machine loop never needs it
+        (a period passes between its write and its next read); tools and tests that run
+        periods back to back call it to read the drives' answers to what they just wrote."""
+        seq = self.sync_seq
+        return self.wait(lambda: all(answered(seq) for answered in self._answer_sources),
+                         timeout_s)
+
+    def probe_report(self) -> Mapping[str, object]:
+        """What ``stave probe`` prints about the link (found in ``MachineBackend.extras``)."""
+        settings = self.settings
+        report: dict[str, object] = {
+            "link": f"{settings.interface} {settings.channel} {settings.bitrate // 1000} kbit/s",
+            "cyclic bus load (computed)": settings.bus_load().describe(),
+            "heartbeat ms": f"{settings.heartbeat_ms} (timeout {settings.heartbeat_timeout_ms})",
+            "SYNCs sent": self.sync_seq,
+        }
+        for node_id, entry in sorted(self._nodes.items()):
+            state = self.watchdog.nmt_state(node_id)
+            text = NMT_STATE_NAMES.get(state, "not heard") if state is not None else "not heard"
+            if entry.last_emcy_code:
+                text += f", last EMCY 0x{entry.last_emcy_code:04X}"
+            report[entry.label] = text
+        return report
 
     def wait(self, predicate: Callable[[], bool], timeout_s: float) -> bool:
         """Wait until ``predicate()`` (evaluated under the condition) holds; False on timeout."""

@@ -20,6 +20,7 @@ settings; nothing sleeps.
 from __future__ import annotations
 
 import logging
+import time
 from abc import abstractmethod
 from collections.abc import Callable
 
@@ -101,6 +102,7 @@ class CanopenDevice:
         try:
             self._bus.acquire()
             self._acquired = True
+            self._bus.add_answer_source(self._answered)
             self._add_nodes()
             with self._bus.condition:
                 beats = {n: self._bus.beats(n) for n in self._nodes()}
@@ -177,8 +179,12 @@ class CanopenDevice:
         return self._bus.events(self.owner)
 
     # ---- helpers for the subclasses ----
+    def _answered(self, seq: int) -> bool:
+        return all(self._latest_seq(n) >= seq for n in self._nodes())
+
     def _release(self) -> None:
         if self._acquired:
+            self._bus.remove_answer_source(self._answered)
             self._bus.remove_nodes(list(self._nodes()))
             self._bus.release()
             self._acquired = False
@@ -241,17 +247,21 @@ class CanopenDevice:
     def _refresh(self) -> None:
         """Make sure the answers to the latest SYNC are in, and count missed TPDOs.
 
-        In the machine loop the previous ``write`` sent the SYNC, about one period ago, and
-        its answers are normally in; a late answer is waited for at most half a period. A
-        tool that only reads gets a SYNC of its own here and waits for its answers."""
+        In the machine loop the previous ``write`` sent the SYNC about one period ago and its
+        answers are normally in; a late answer is waited for until 1.5 periods after that
+        SYNC, no longer, so a lost frame costs the loop at most half a period. A tool that
+        only reads gets a SYNC of its own here and waits for its answers."""
         bus = self._bus
         if bus.sync_seq == self._read_seq:
             bus.sync(feedback=True)
         seq = bus.sync_seq
         nodes = self._nodes()
-        wait_s = (max(0.05, 10 * self._settings.period_s) if bus.sync_is_feedback
-                  else self._settings.period_s / 2)
-        bus.wait(lambda: all(self._latest_seq(n) >= seq for n in nodes), wait_s)
+        period_s = self._settings.period_s
+        if bus.sync_is_feedback:
+            wait_s = max(0.05, 10 * period_s)
+        else:
+            wait_s = max(0.0, bus.sync_time_s + 1.5 * period_s - time.monotonic())
+        bus.wait(lambda: self._answered(seq), wait_s)
         self._read_seq = seq
         if self._checked_seq == seq:
             return

@@ -123,6 +123,8 @@ def period(backend: MachineBackend, positions: Mapping[str, float] | None = None
     targets.update(positions or {})
     backend.motion.write_setpoints(targets)
     backend.io.write_outputs(outputs or OutputImage())
+    # periods run back to back here: wait for the answers a real period would have waited for
+    assert backend.extras["canopen"].wait_for_answers(1.0)  # type: ignore[attr-defined]
     return feedback, inputs
 
 
