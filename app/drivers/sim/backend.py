@@ -145,16 +145,24 @@ class _AxisMaster:
                 self._done()
 
     def sync(self) -> None:
-        """One SYNC: walk a pending request, then send controlword, mode and target."""
+        """One SYNC: walk a pending request, send the controlword, then mode and target.
+
+        A target written after a homing run has ended switches the drive back to cyclic
+        synchronous position mode; while a homing request is still being walked, or the
+        drive homes, targets are sent but the drive (in homing mode) ignores them."""
         drive = self.drive
         if self.request is not None:
             self._walk()
+        drive.write_controlword(self.controlword)
         if self.new_target:
             self.new_target = False
-            if drive.mode is OperationMode.HOMING and not drive.homing_active:
+            if (
+                drive.mode is OperationMode.HOMING
+                and not drive.homing_active
+                and self.request is not _Request.HOMING
+            ):
                 drive.set_mode(OperationMode.CYCLIC_SYNC_POSITION)
                 self.controlword &= ~CW_BIT_HOMING_START
-        drive.write_controlword(self.controlword)
         drive.write_target(self.target)
 
 
@@ -231,6 +239,11 @@ class SimMotion(_Adapter, MotionBackend):
     @property
     def axis_names(self) -> tuple[str, ...]:
         return tuple(self._masters)
+
+    @property
+    def command_positions(self) -> Mapping[str, float]:
+        """The targets the master sends at every SYNC (for tests and a technician's view)."""
+        return {name: master.target for name, master in self._masters.items()}
 
     def advance(self, dt_s: float) -> None:
         """TimeDriven: advance the whole simulated world by ``dt_s``."""

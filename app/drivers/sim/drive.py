@@ -179,8 +179,7 @@ _CSP = OperationMode.CYCLIC_SYNC_POSITION
 class HomingPhase(enum.Enum):
     LEAVE = "move off the switch"  # started on the switch
     SEARCH = "search the switch"
-    REVERSE_FIND = "reversed at the limit switch, search the switch"
-    REVERSE_THROUGH = "reversed, pass the switch"
+    REVERSE = "reversed at the limit switch, pass the switch"
     BACKOFF = "back off the switch"
     APPROACH = "approach the edge slowly"
     STOP = "stop"
@@ -256,6 +255,7 @@ class SimDrive:
     controlwords, modes and targets at SYNC; the world calls :meth:`step` every substep."""
 
     __slots__ = (
+        "_cam_before",
         "_cw",
         "_demand",
         "_emcy",
@@ -321,6 +321,7 @@ class SimDrive:
         self._homing_active = False
         self._homing_attained = False
         self._homing_phase = HomingPhase.SEARCH
+        self._cam_before = False
         self._sto = False
         self._sto_s = 0.0
         self._link_ok = True
@@ -524,6 +525,7 @@ class SimDrive:
             self._stuck_positive = active
         else:
             self._stuck_negative = active
+        self._update_limits()
 
     # -- internals ------------------------------------------------------------------------
     def _check_unusual(self) -> None:
@@ -591,15 +593,23 @@ class SimDrive:
         self._homed = False
         self._demand = self._p + self._offset
         self._vff = 0.0
-        self._homing_phase = HomingPhase.LEAVE if self.home_switch else HomingPhase.SEARCH
+        self._cam_before = self.home_switch
+        self._homing_phase = HomingPhase.LEAVE if self._cam_before else HomingPhase.SEARCH
 
     def _homing_velocity(self, dt: float) -> None:
         """One substep of the homing method: watch the switches, choose the demand velocity
-        of this substep (the demand itself moves after the loop, see :meth:`step`)."""
+        of this substep (the demand itself moves after the loop, see :meth:`step`).
+
+        Only edges of the home switch seen while moving the right way count: an axis that
+        overshoots through a short cam while braking must not mistake the far edge for the
+        reference edge."""
         params = self.params
         direction = params.homing_direction
         phase = self._homing_phase
         cam = self.home_switch
+        rising = cam and not self._cam_before
+        falling = self._cam_before and not cam
+        self._cam_before = cam
         moving = self._vff
         ahead_limit = self._lim_pos if direction > 0 else self._lim_neg
         behind_limit = self._lim_neg if direction > 0 else self._lim_pos
@@ -608,24 +618,9 @@ class SimDrive:
             if cam:
                 phase = HomingPhase.BACKOFF
             elif ahead_limit:
-                phase = HomingPhase.REVERSE_FIND
-        elif phase in (
-            HomingPhase.LEAVE,
-            HomingPhase.REVERSE_FIND,
-            HomingPhase.REVERSE_THROUGH,
-            HomingPhase.BACKOFF,
-        ):
-            if behind_limit and moving * direction < 0:
-                self._fault(EmcyCode.HOMING_FAILED, ramp=True)
-                return
-            backing = moving * direction < 0  # edges count only while moving the right way
-            if phase is HomingPhase.REVERSE_FIND:
-                if cam and backing:
-                    phase = HomingPhase.REVERSE_THROUGH
-            elif not cam and backing:
-                phase = HomingPhase.APPROACH
+                phase = HomingPhase.REVERSE
         elif phase is HomingPhase.APPROACH:
-            if cam and moving * direction > 0:
+            if rising and moving * direction > 0:
                 # Latch the reference edge: from here on the encoder reads the machine frame.
                 shift = -self._offset
                 self._offset = 0.0
@@ -633,9 +628,16 @@ class SimDrive:
                 self._target += shift
                 self._target_prev += shift
                 phase = HomingPhase.STOP
-            elif ahead_limit:
+            elif ahead_limit and moving * direction > 0:
                 self._fault(EmcyCode.HOMING_FAILED, ramp=True)
                 return
+        elif phase is not HomingPhase.STOP:  # LEAVE, REVERSE, BACKOFF: against the direction
+            backing = moving * direction < 0
+            if behind_limit and backing:
+                self._fault(EmcyCode.HOMING_FAILED, ramp=True)
+                return
+            if falling and backing:  # left the cam at its reference edge
+                phase = HomingPhase.APPROACH
         self._homing_phase = phase
         if phase is HomingPhase.SEARCH:
             wanted = direction * speed

@@ -63,8 +63,9 @@ class Rig:
     def centred(cls, **sim: Any) -> Rig:
         """Absolute encoders on X and Y too, all axes started mid-travel."""
         settings = {"start_position": dict(CENTRE), **sim}
-        return cls(make_config(settings, axes={"X": {"encoder": "absolute"},
-                                               "Y": {"encoder": "absolute"}}))
+        return cls(
+            make_config(settings, axes={"X": {"encoder": "absolute"}, "Y": {"encoder": "absolute"}})
+        )
 
     def fb(self, axis: str) -> AxisFeedback:
         return self.motion.read_axes()[axis]
@@ -94,11 +95,16 @@ class Rig:
     def enable(self, *axes: str) -> None:
         for axis in axes or self.motion.axis_names:
             self.motion.enable(axis)
-        self.run_until(lambda: all(self.fb(a).enabled for a in axes or self.motion.axis_names),
-                       0.2)
+        self.run_until(lambda: all(self.fb(a).enabled for a in axes or self.motion.axis_names), 0.2)
 
-    def move(self, axis: str, distance: float, velocity: float, acceleration: float,
-             record: Callable[[AxisFeedback], None] | None = None) -> None:
+    def move(
+        self,
+        axis: str,
+        distance: float,
+        velocity: float,
+        acceleration: float,
+        record: Callable[[AxisFeedback], None] | None = None,
+    ) -> None:
         """A trapezoidal move of the command by ``distance`` (sign = direction)."""
         start = self.command[axis]
         for position in trapezoid(distance, velocity, acceleration, self.period_s):
@@ -111,8 +117,9 @@ class Rig:
         return self.fb(axis).power_state
 
 
-def trapezoid(distance: float, velocity: float, acceleration: float,
-              period_s: float) -> list[float]:
+def trapezoid(
+    distance: float, velocity: float, acceleration: float, period_s: float
+) -> list[float]:
     """Positions (from 0) of a move with trapezoidal velocity, one per period."""
     sign = 1.0 if distance >= 0 else -1.0
     length = abs(distance)

@@ -78,15 +78,22 @@ def test_power_up_goes_from_not_ready_to_switch_on_disabled() -> None:
     assert drive.state is S.SWITCH_ON_DISABLED
 
 
-@pytest.mark.parametrize(("word", "command"), [
-    (0x06, Command.SHUTDOWN), (0x0E, Command.SHUTDOWN),
-    (0x07, Command.SWITCH_ON), (0x0F, Command.ENABLE_OPERATION),
-    (0x00, Command.DISABLE_VOLTAGE), (0x05, Command.DISABLE_VOLTAGE),
-    (0x0D, Command.DISABLE_VOLTAGE), (0x02, Command.QUICK_STOP), (0x0B, Command.QUICK_STOP),
-    (0x1F, Command.ENABLE_OPERATION),
-])
-def test_controlword_decoding_follows_the_device_control_table(word: int,
-                                                               command: Command) -> None:
+@pytest.mark.parametrize(
+    ("word", "command"),
+    [
+        (0x06, Command.SHUTDOWN),
+        (0x0E, Command.SHUTDOWN),
+        (0x07, Command.SWITCH_ON),
+        (0x0F, Command.ENABLE_OPERATION),
+        (0x00, Command.DISABLE_VOLTAGE),
+        (0x05, Command.DISABLE_VOLTAGE),
+        (0x0D, Command.DISABLE_VOLTAGE),
+        (0x02, Command.QUICK_STOP),
+        (0x0B, Command.QUICK_STOP),
+        (0x1F, Command.ENABLE_OPERATION),
+    ],
+)
+def test_controlword_decoding_follows_the_device_control_table(word: int, command: Command) -> None:
     assert decode_controlword(word) is command
 
 
@@ -101,8 +108,9 @@ def test_every_transition_of_the_table(start: Cia402State, command: Command) -> 
 
 @pytest.mark.parametrize("start", list(PATHS))
 @pytest.mark.parametrize("command", list(Command))
-def test_commands_outside_the_table_leave_the_state_alone(start: Cia402State,
-                                                          command: Command) -> None:
+def test_commands_outside_the_table_leave_the_state_alone(
+    start: Cia402State, command: Command
+) -> None:
     if (start, command) in TRANSITIONS:
         return
     drive, _ = drive_in(start)
@@ -190,8 +198,7 @@ def test_in_fault_no_command_but_reset_is_obeyed() -> None:
         assert drive.state is S.FAULT
 
 
-@pytest.mark.parametrize("state", [S.SWITCH_ON_DISABLED, S.READY_TO_SWITCH_ON,
-                                   S.SWITCHED_ON])
+@pytest.mark.parametrize("state", [S.SWITCH_ON_DISABLED, S.READY_TO_SWITCH_ON, S.SWITCHED_ON])
 def test_without_operation_enabled_targets_are_not_followed(state: Cia402State) -> None:
     drive, _ = drive_in(state)
     drive.write_target(150.0)
