@@ -80,7 +80,7 @@ class Watch:
             last = c.cycle.last_output
             if last is not None and last.cutting:
                 x, y, _z = c.axes.positions()
-                error = c.cycle.planned.toolpath.distance_to_path(x, y)
+                error = c.cycle.planned.plan.distance_to_path(x, y)
                 self.max_contour_error_mm = max(self.max_contour_error_mm, error)
         if c.state in LATCHED_STATES and not self.operator_acted:
             self._watch_latched(c)

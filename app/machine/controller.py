@@ -31,6 +31,7 @@ from app.drivers.contracts import (
     DriverError,
     FaultInjector,
     InputImage,
+    LifecycleState,
     MachineBackend,
     OutputImage,
     WidthGauge,
@@ -40,7 +41,7 @@ from app.machine.alarms import AlarmManager
 from app.machine.axes import AxisGroup
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
 from app.machine.cycle_plan import PlannedStave, plan_board
-from app.machine.executor import check_feedback
+from app.machine.executor import ViolationKind, check_feedback
 from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
@@ -62,6 +63,15 @@ log = logging.getLogger(__name__)
 STOP_LOCKOUT_S = 0.5  # a second Stop within this time is ignored (spec section 6)
 RESET_TIMEOUT_S = 1.0  # how long a Reset waits for the drives to leave FAULT
 FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
+VIOLATION_ALARMS = {
+    ViolationKind.NO_FEEDBACK: "E020",
+    ViolationKind.DRIVE_FAULT: "E010",
+    ViolationKind.NOT_ENABLED: "E013",
+    ViolationKind.FOLLOWING_ERROR: "E011",
+    ViolationKind.LIMIT_POSITIVE: "E012",
+    ViolationKind.LIMIT_NEGATIVE: "E012",
+    ViolationKind.SOFT_LIMIT: "E050",
+}
 EMERGENCY_TEXTS = {
     0x8611: "following error",
     0x7300: "sensor",
@@ -129,7 +139,8 @@ class MachineController:
         """Configure and activate every device; the state follows from the encoders."""
         try:
             for device in (*self.backend.devices(), self.gauge):
-                device.configure()
+                if device.lifecycle_state is not LifecycleState.INACTIVE:
+                    device.configure()
             for device in (*self.backend.devices(), self.gauge):
                 device.activate()
             self.axes.update(self.backend.motion.read_axes())
@@ -155,7 +166,8 @@ class MachineController:
             log.warning("shutdown: %s", exc)
         for device in (self.gauge, *self.backend.devices()):
             try:
-                device.deactivate()
+                if device.lifecycle_state is LifecycleState.ACTIVE:
+                    device.deactivate()
             except DriverError as exc:
                 log.warning("deactivate %s: %s", type(device).__name__, exc)
             device.shutdown()
@@ -458,7 +470,7 @@ class MachineController:
         if self.cycle is not None and self.cycle.moving:
             setpoint = {n: self.axes.command[n] for n in self.axes.names}
             for violation in check_feedback(self.axes.feedback, setpoint, self.config.axes):
-                self._fault(violation.code, violation.axis, violation.text)
+                self._fault(VIOLATION_ALARMS[violation.kind], violation.axis, violation.message)
             if not self.axes.all_homed():
                 self._fault("E016", "axes", "an axis lost its home position")
 

@@ -21,7 +21,7 @@ from app.data.recipe import Recipe
 from app.drivers.contracts import CommunicationError, InputImage, OutputImage, WidthGauge
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
-from app.machine.executor import PathExecutor
+from app.machine.executor import ExecutorOutput, PathExecutor
 from app.machine.planner.trajectory import Phase
 from app.machine.states import CycleStep
 
@@ -99,6 +99,7 @@ class AutomaticCycle:
         self._plan_future: concurrent.futures.Future[PlannedStave] | None = None
         self.planned: PlannedStave | None = None
         self.executor: PathExecutor | None = None
+        self.last_output: ExecutorOutput | None = None
         self.outcome = CycleOutcome()
         self.finished = False
         self._stop_requested = False
@@ -126,10 +127,6 @@ class AutomaticCycle:
     def moving(self) -> bool:
         """True while the path executor drives the axes."""
         return self.executor is not None and not self.executor.done
-
-    @property
-    def elapsed_s(self) -> float:
-        return self._step_started_s - self.started_s if self.finished else 0.0
 
     def remaining_s(self) -> float:
         if self.executor is not None:
@@ -261,6 +258,7 @@ class AutomaticCycle:
         executor = self.executor
         assert executor is not None
         out = executor.step()
+        self.last_output = out
         axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
         step = _PHASE_STEPS[out.phase]
         if step is not self.step:

@@ -26,7 +26,7 @@ class ManualControl:
     def __init__(self, configs: Mapping[str, AxisConfig]) -> None:
         self._configs = configs
         self._joggers: dict[str, Jogger] = {
-            name: Jogger.from_config(cfg) for name, cfg in configs.items()}
+            name: Jogger.from_axis_config(cfg, cfg.home_position) for name, cfg in configs.items()}
         self._speeds: dict[str, tuple[float, float]] = {
             "XY": (configs["X"].jog_velocity, configs["X"].jog_acceleration),
             "Z": (configs["Z"].jog_velocity, configs["Z"].jog_acceleration),
@@ -52,17 +52,30 @@ class ManualControl:
             self._joggers[name].set_limits(velocity, acceleration)
         return ""
 
+    def _reset(self, name: str, position: float) -> None:
+        """The jogger of ``name`` takes over the measured position, abandoning any motion
+        (used where the drive is not following setpoints anyway)."""
+        jogger = self._joggers[name]
+        if jogger.moving:
+            velocity, acceleration = self._speeds["Z" if name == "Z" else "XY"]
+            jogger = Jogger.from_axis_config(self._configs[name], position)
+            jogger.set_limits(velocity, acceleration)
+            self._joggers[name] = jogger
+        else:
+            jogger.set_position(position)
+
     def sync(self, axes: AxisGroup) -> None:
         """Start every jogger from where its axis is (entering manual, after homing)."""
-        for name, jogger in self._joggers.items():
+        for name in self._joggers:
             if name in axes.feedback:
-                jogger.reset(axes.position(name))
+                self._reset(name, axes.position(name))
 
     def _check_axis(self, axis: str, axes: AxisGroup) -> str:
+        """Refuse an unknown axis; ask the drives to enable (the jog is the operator's
+        action that allows it; the motion starts once they are enabled)."""
         if axis not in self._joggers:
             return f"axis {axis!r} is not allowed: X, Y or Z"
-        if not axes.request_enable():
-            return ""  # the drives are being enabled; the jog starts once they are
+        axes.request_enable()
         return ""
 
     def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> str:
@@ -71,12 +84,13 @@ class ManualControl:
         if direction not in (-1, 1):
             return f"jog direction {direction} is not allowed: -1 or 1"
         self._last_refresh_s[axis] = now_s
-        return self._joggers[axis].press(direction)
+        return self._joggers[axis].press(direction).reason
 
     def step(self, axis: str, distance: float, axes: AxisGroup) -> str:
         if reason := self._check_axis(axis, axes):
             return reason
-        return self._joggers[axis].step(distance)
+        result = self._joggers[axis].step(distance)
+        return "" if result.accepted else result.reason
 
     def release(self, axis: str = "") -> None:
         for name, jogger in self._joggers.items():
@@ -85,11 +99,13 @@ class ManualControl:
                 self._last_refresh_s.pop(name, None)
 
     def release_all(self, immediate: bool = False) -> None:
-        for jogger in self._joggers.values():
+        """Stop every jog: decelerating, or (``immediate``, the drives are being stopped by
+        the controller) abandoned where the setpoints are."""
+        for name, jogger in list(self._joggers.items()):
             if immediate:
-                jogger.stop_immediately()
+                self._reset(name, jogger.position)
             else:
-                jogger.release()
+                jogger.stop()
         self._last_refresh_s.clear()
 
     def tick(self, now_s: float, period_s: float, axes: AxisGroup) -> str:
@@ -107,7 +123,8 @@ class ManualControl:
             if not enabled:
                 if jogger.moving:
                     axes.request_enable()
-                jogger.reset(axes.position(name))
+                    continue
+                self._reset(name, axes.position(name))
                 continue
             axes.command[name] = jogger.next_position(period_s)
         return expired

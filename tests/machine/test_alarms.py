@@ -62,7 +62,7 @@ def test_full_history_and_one_line_per_source() -> None:
     manager.raise_alarm("E010", "Y")
     assert len(manager.views()) == 2
     manager.clear("E010", "X")
-    manager.acknowledge(manager.views()[-1].alarm_id)
+    manager.acknowledge(seen[0].alarm_id)  # the X alarm, returned to normal
     assert [t.to_state for t in manager.history] == [
         AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED,
         AlarmState.NORMAL]
