@@ -39,14 +39,17 @@ GAUGE_WAIT_S = 3.0
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--config", metavar="FILE",
-                        help="machine configuration (default: the shipped machine.toml)")
-    parser.add_argument("--json", action="store_true",
-                        help="print one JSON document instead of text")
+    parser.add_argument(
+        "--config", metavar="FILE", help="machine configuration (default: the shipped machine.toml)"
+    )
+    parser.add_argument(
+        "--json", action="store_true", help="print one JSON document instead of text"
+    )
 
 
-def _gauge_reading(gauge: WidthGauge, devices: list[Lifecycle],
-                   period_s: float) -> GaugeReading | None:
+def _gauge_reading(
+    gauge: WidthGauge, devices: list[Lifecycle], period_s: float
+) -> GaugeReading | None:
     """One reading, waiting at most GAUGE_WAIT_S; simulated devices are advanced instead of
     waiting in real time."""
     gauge.request()
@@ -115,14 +118,18 @@ def _probe(config: MachineConfig, report: dict[str, Any]) -> None:
         reading = _gauge_reading(gauge, [gauge, *backend.devices()], config.period_s)
         if reading is None:
             raise DriverError("gauge", f"no reading within {GAUGE_WAIT_S:g} s")
-        report["gauge"] = {"width_mm": reading.width_mm, "raw": reading.raw,
-                           "error": reading.error}
+        report["gauge"] = {"width_mm": reading.width_mm, "raw": reading.raw, "error": reading.error}
     finally:
         for device in started:
             for event in device.events():
                 report["events"].append(
-                    {"kind": event.kind.value, "device": event.device,
-                     "code": f"0x{event.code:04X}", "text": event.text})
+                    {
+                        "kind": event.kind.value,
+                        "device": event.device,
+                        "code": f"0x{event.code:04X}",
+                        "text": event.text,
+                    }
+                )
         for name, extra in backend.extras.items():
             probe_report = getattr(extra, "probe_report", None)
             if callable(probe_report):
@@ -131,20 +138,33 @@ def _probe(config: MachineConfig, report: dict[str, Any]) -> None:
 
 
 def _text(report: dict[str, Any]) -> str:
-    lines = [f"backend: {report['backend']}   gauge: {report['gauge_name']}   "
-             f"config: {report['config']}"]
+    lines = [
+        f"backend: {report['backend']}   gauge: {report['gauge_name']}   config: {report['config']}"
+    ]
     axes = report.get("axes")
     if axes:
-        lines.append(f"{'axis':<5}{'power state':<24}{'position':>10}{'':4}  {'fault':<8}"
-                     f"{'homed':<7}switches")
+        lines.append(
+            f"{'axis':<5}{'power state':<24}{'position':>10}{'':4}  {'fault':<8}"
+            f"{'homed':<7}switches"
+        )
         for name, a in axes.items():
-            switches = " ".join(label for label, key in (("home", "home_switch"),
-                                                         ("limit-", "limit_negative"),
-                                                         ("limit+", "limit_positive"))
-                                if a[key]) or "-"
-            lines.append(f"{name:<5}{a['power_state']:<24}{a['position']:>10.3f} "
-                         f"{a['unit']:<3}  {a['fault_code']:<8}"
-                         f"{'yes' if a['homed'] else 'no':<7}{switches}")
+            switches = (
+                " ".join(
+                    label
+                    for label, key in (
+                        ("home", "home_switch"),
+                        ("limit-", "limit_negative"),
+                        ("limit+", "limit_positive"),
+                    )
+                    if a[key]
+                )
+                or "-"
+            )
+            lines.append(
+                f"{name:<5}{a['power_state']:<24}{a['position']:>10.3f} "
+                f"{a['unit']:<3}  {a['fault_code']:<8}"
+                f"{'yes' if a['homed'] else 'no':<7}{switches}"
+            )
     inputs = report.get("inputs")
     if inputs:
         lines.append("inputs: " + "  ".join(f"{k}={int(v)}" for k, v in inputs.items()))
@@ -155,8 +175,9 @@ def _text(report: dict[str, Any]) -> str:
         else:
             lines.append(f"gauge: no width: {gauge['error']}")
     for event in report["events"]:
-        lines.append(f"event: {event['device']}: {event['kind']} {event['code']} "
-                     f"{event['text']}".rstrip())
+        lines.append(
+            f"event: {event['device']}: {event['kind']} {event['code']} {event['text']}".rstrip()
+        )
     for name, values in report["link"].items():
         lines.append(f"{name}: " + ", ".join(f"{k} {v}" for k, v in values.items()))
     return "\n".join(lines)
@@ -168,9 +189,14 @@ def run(args: argparse.Namespace) -> int:
     except ConfigError as exc:
         print(f"stave probe: {exc}", file=sys.stderr)
         return 2
-    report: dict[str, Any] = {"config": config.source, "backend": config.backend,
-                              "gauge_name": config.gauge, "events": [], "link": {},
-                              "error": None}
+    report: dict[str, Any] = {
+        "config": config.source,
+        "backend": config.backend,
+        "gauge_name": config.gauge,
+        "events": [],
+        "link": {},
+        "error": None,
+    }
     code = 0
     try:
         _probe(config, report)

@@ -30,7 +30,8 @@ class LinkReport:
     def probe_report(self) -> Mapping[str, object]:
         stats = self.bus.statistics
         per_period = 2 * len(self.settings.drives) + (
-            2 if self.settings.coupler.output_count else 1)
+            2 if self.settings.coupler.output_count else 1
+        )
         report: dict[str, object] = {
             "links": ", ".join(self.bus.link_names),
             "transactions per period": per_period,
@@ -44,7 +45,8 @@ class LinkReport:
         }
         if stats.transactions:
             report["estimated period traffic ms"] = round(
-                per_period * stats.mean_time_s * 1000.0, 3)
+                per_period * stats.mean_time_s * 1000.0, 3
+            )
         estimate = estimate_rtu_cycle(self.settings)
         if estimate is not None:
             report["rtu period traffic ms (computed)"] = round(estimate.cycle_s * 1000.0, 2)
@@ -63,6 +65,9 @@ def create_backend(config: MachineConfig) -> MachineBackend:
     motion = ModbusMotion(settings.drives, config.axes, bus)
     io = ModbusIO(settings.coupler, bus)
     report = LinkReport(settings, bus, config.period_s)
-    return MachineBackend("modbus", motion, io,
-                          extras={"modbus_settings": settings, "modbus_bus": bus,
-                                  "link_report": report})
+    return MachineBackend(
+        "modbus",
+        motion,
+        io,
+        extras={"modbus_settings": settings, "modbus_bus": bus, "link_report": report},
+    )

@@ -83,8 +83,12 @@ class _LostState:
 
 
 class ModbusBus:
-    def __init__(self, settings: LinkSettings, devices: Iterable[DeviceAddress],
-                 clock: Callable[[], float] = time.perf_counter) -> None:
+    def __init__(
+        self,
+        settings: LinkSettings,
+        devices: Iterable[DeviceAddress],
+        clock: Callable[[], float] = time.perf_counter,
+    ) -> None:
         self.settings = settings
         self._clock = clock
         self._devices = {d.name: d for d in devices}
@@ -96,6 +100,7 @@ class ModbusBus:
         self._state = _LostState()
         self._events: list[DeviceEvent] = []
         self.statistics = BusStatistics()
+        self.generation = 0  # counts (re)openings: a device configured before is stale
 
     def _make_link(self, endpoint: Endpoint | None) -> ModbusLink:
         s = self.settings
@@ -118,6 +123,11 @@ class ModbusBus:
     def lost(self) -> bool:
         return self._state.lost
 
+    def stale(self, generation: int) -> bool:
+        """Whether a device configured at ``generation`` lost its link since (the link may
+        have been reopened by the other device's configure)."""
+        return self._state.lost or generation != self.generation
+
     @property
     def is_open(self) -> bool:
         return bool(self._links) and all(link.is_open for link in self._links.values())
@@ -133,8 +143,9 @@ class ModbusBus:
                     link.open()
                 except LinkClosedError as exc:
                     self._close_all()
-                    raise CommunicationError(user, str(exc)) from None
+                    raise CommunicationError("modbus", str(exc)) from None
             self._state = _LostState()
+            self.generation += 1
         self._users.add(user)
 
     def release(self, user: str) -> None:
@@ -152,16 +163,20 @@ class ModbusBus:
         return events
 
     # -- one exchange -----------------------------------------------------------------------
-    def exchange(self, device: DeviceAddress, operation: Callable[[ModbusLink], T], *,
-                 tolerate: bool = True) -> T:
+    def exchange(
+        self, device: DeviceAddress, operation: Callable[[ModbusLink], T], *, tolerate: bool = True
+    ) -> T:
         """Run ``operation`` on the device's link under the rules above.
 
         ``tolerate``: a failure below the threshold raises :class:`TransientError` (cyclic
         exchange); with False it raises CommunicationError at once (``configure`` checks)."""
         state = self._state
         if state.lost:
-            raise CommunicationError(device.name, f"Modbus link lost ({state.reason}); "
-                                     "an operator's reset must reconfigure the backend")
+            raise CommunicationError(
+                device.name,
+                f"Modbus link lost ({state.reason}); "
+                "an operator's reset must reconfigure the backend",
+            )
         link = self._links[device.endpoint]
         if not link.is_open:
             raise CommunicationError(device.name, f"{link.name} is not open (configure first)")
@@ -179,8 +194,9 @@ class ModbusBus:
                 self._account(started)
                 if exc.code != BUSY:
                     stats.exception_replies += 1
-                    raise DriverError(device.name, f"{self.describe(device)} answered {exc}",
-                                      exc.code) from None
+                    raise DriverError(
+                        device.name, f"{self.describe(device)} answered {exc}", exc.code
+                    ) from None
                 failure = f"{self.describe(device)} answered {exc}"
             except NoReplyError as exc:
                 self._account(started)
@@ -219,5 +235,6 @@ class ModbusBus:
         self._state.lost = True
         self._state.reason = f"{device.name}: {reason}"
         self._close_all()
-        self._events.append(DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, device.name,
-                                        text=reason))
+        self._events.append(
+            DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, device.name, text=reason)
+        )

@@ -185,8 +185,9 @@ class Cia402Commander:
             return Command(controlword | CW_HOMING_START, self.homing_mode, True)
         if phase in (HomingPhase.START, HomingPhase.RUNNING):
             return Command(controlword | CW_HOMING_START, self.homing_mode, True)
-        return Command(controlword, self.position_mode, not enabled or phase is not
-                       HomingPhase.IDLE)
+        return Command(
+            controlword, self.position_mode, not enabled or phase is not HomingPhase.IDLE
+        )
 
     def _abort_homing(self, reason: str) -> HomingOutcome | None:
         if self._homing is HomingPhase.IDLE:

@@ -39,8 +39,9 @@ def decode(registers: Sequence[int], data_type: DataType, word_order: WordOrder)
     """The value held by ``registers`` (exactly ``data_type.registers`` of them)."""
     words = list(registers)
     if len(words) != data_type.registers:
-        raise ValueError(f"{data_type.value} needs {data_type.registers} registers, "
-                         f"got {len(words)}")
+        raise ValueError(
+            f"{data_type.value} needs {data_type.registers} registers, got {len(words)}"
+        )
     if word_order is WordOrder.LITTLE:
         words.reverse()
     raw = b"".join(w.to_bytes(2, "big") for w in words)
@@ -62,24 +63,26 @@ def encode(value: float, data_type: DataType, word_order: WordOrder) -> list[int
         if not low <= number <= high:
             raise EncodeError(f"{number} does not fit {data_type.value} ({low} to {high})")
         raw = struct.pack(_STRUCT[data_type], number)
-    words = [int.from_bytes(raw[i:i + 2], "big") for i in range(0, len(raw), 2)]
+    words = [int.from_bytes(raw[i : i + 2], "big") for i in range(0, len(raw), 2)]
     if word_order is WordOrder.LITTLE:
         words.reverse()
     return words
 
 
-def field_value(block: Sequence[int], block_start: int, field: Field,
-                word_order: WordOrder) -> float:
+def field_value(
+    block: Sequence[int], block_start: int, field: Field, word_order: WordOrder
+) -> float:
     """Decode ``field`` out of a block read from ``block_start``."""
     offset = field.address - block_start
-    return decode(block[offset:offset + field.data_type.registers], field.data_type, word_order)
+    return decode(block[offset : offset + field.data_type.registers], field.data_type, word_order)
 
 
-def put_field(block: list[int], block_start: int, field: Field, value: float,
-              word_order: WordOrder) -> None:
+def put_field(
+    block: list[int], block_start: int, field: Field, value: float, word_order: WordOrder
+) -> None:
     """Encode ``value`` into ``block`` (a block written from ``block_start``) in place."""
     offset = field.address - block_start
-    block[offset:offset + field.data_type.registers] = encode(value, field.data_type, word_order)
+    block[offset : offset + field.data_type.registers] = encode(value, field.data_type, word_order)
 
 
 def bits_of(word: int, bit: int) -> bool:

@@ -36,18 +36,32 @@ class ModbusIO(DigitalIO):
         self._bus = bus
         self.address = DeviceAddress("io", settings.endpoint, settings.device_id)
         self._state = LifecycleState.UNCONFIGURED
+        self._generation = -1
         self._inputs: InputImage | None = None
 
     @property
     def lifecycle_state(self) -> LifecycleState:
         return self._state
 
+    def _sync_state(self) -> None:
+        """ACTIVE/INACTIVE on a link lost (or reopened by the other device) since this
+        device's configure is ERROR: only configure may follow."""
+        if self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE) and self._bus.stale(
+            self._generation
+        ):
+            self._state = LifecycleState.ERROR
+
     def configure(self) -> None:
-        if self._state not in (LifecycleState.UNCONFIGURED, LifecycleState.INACTIVE,
-                               LifecycleState.ERROR):
+        self._sync_state()
+        if self._state not in (
+            LifecycleState.UNCONFIGURED,
+            LifecycleState.INACTIVE,
+            LifecycleState.ERROR,
+        ):
             raise LifecycleError("io", f"configure in state {self._state.value}")
         try:
             self._bus.acquire(USER)
+            self._generation = self._bus.generation
             self._inputs = self._read(tolerate=False)
         except DriverError:
             self._state = LifecycleState.ERROR
@@ -70,10 +84,10 @@ class ModbusIO(DigitalIO):
         """Every output off; INACTIVE even when the link is gone (see the motion side)."""
         if self._state is not LifecycleState.ACTIVE:
             return
-        self._state = LifecycleState.INACTIVE
-        if self._bus.lost:
+        if self._bus.stale(self._generation):
             self._state = LifecycleState.ERROR
             return
+        self._state = LifecycleState.INACTIVE
         self._write(OutputImage(), tolerate=False)
 
     def shutdown(self) -> None:
@@ -91,12 +105,12 @@ class ModbusIO(DigitalIO):
         return self._bus.events()
 
     def _check(self, *allowed: LifecycleState) -> None:
-        if self._bus.lost and self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE):
-            self._state = LifecycleState.ERROR
+        self._sync_state()
         if self._state not in allowed:
-            if self._state is LifecycleState.ERROR and self._bus.lost:
-                raise CommunicationError("io", "Modbus link lost; an operator's reset must "
-                                         "reconfigure the backend")
+            if self._state is LifecycleState.ERROR and self._bus.stale(self._generation):
+                raise CommunicationError(
+                    "io", "Modbus link lost; an operator's reset must reconfigure the backend"
+                )
             raise LifecycleError("io", f"not allowed in state {self._state.value}")
 
     # -- cyclic exchange ------------------------------------------------------------------

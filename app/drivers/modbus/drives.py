@@ -33,9 +33,9 @@ from app.drivers.contracts import (
 )
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
 from app.drivers.modbus.cia402 import Cia402Commander
-from app.drivers.modbus.codec import EncodeError, field_value, put_field
+from app.drivers.modbus.codec import EncodeError, encode, field_value, put_field
 from app.drivers.modbus.link import ModbusLink
-from app.drivers.modbus.settings import DriveSettings
+from app.drivers.modbus.settings import DriveSettings, WordOrder
 
 GENERIC_FAULT_CODE = 0x1000  # CiA 301 "generic error": a fault whose code is not mapped
 USER = "motion"
@@ -48,8 +48,9 @@ class _Axis:
         self.settings = settings
         self.config = config
         self.address = DeviceAddress(settings.axis, settings.endpoint, settings.device_id)
-        self.commander = Cia402Commander(settings.map.position_mode_value,
-                                         settings.map.homing_mode_value)
+        self.commander = Cia402Commander(
+            settings.map.position_mode_value, settings.map.homing_mode_value
+        )
         self.feedback: AxisFeedback | None = None
         self.actual_counts = 0.0
         self.target_counts = 0.0
@@ -63,11 +64,16 @@ class _Axis:
         statusword = int(field_value(block, start, m.statusword, order))
         counts = field_value(block, start, m.position, order)
         self.actual_counts = counts
-        velocity = (field_value(block, start, m.velocity, order)
-                    / self.settings.velocity_counts_per_unit_s if m.velocity else 0.0)
+        velocity = (
+            field_value(block, start, m.velocity, order) / self.settings.velocity_counts_per_unit_s
+            if m.velocity
+            else 0.0
+        )
         inputs = int(field_value(block, start, m.inputs, order)) if m.inputs else 0
-        state_faulted = self.commander.state in (Cia402State.FAULT,
-                                                 Cia402State.FAULT_REACTION_ACTIVE)
+        state_faulted = self.commander.state in (
+            Cia402State.FAULT,
+            Cia402State.FAULT_REACTION_ACTIVE,
+        )
         if m.fault_code is not None:
             fault_code = int(field_value(block, start, m.fault_code, order))
         else:
@@ -75,8 +81,10 @@ class _Axis:
         self.fault_code = fault_code
         position = counts / self.settings.counts_per_unit
         following = 0.0
-        if self.commander.state is Cia402State.OPERATION_ENABLED and \
-                not self.commander.homing_active:
+        if (
+            self.commander.state is Cia402State.OPERATION_ENABLED
+            and not self.commander.homing_active
+        ):
             following = (self.target_counts - counts) / self.settings.counts_per_unit
         return AxisFeedback(
             name=self.settings.axis,
@@ -94,12 +102,14 @@ class _Axis:
 
 
 class ModbusMotion(MotionBackend):
-    def __init__(self, drives: Mapping[str, DriveSettings], axes: Mapping[str, AxisConfig],
-                 bus: ModbusBus) -> None:
+    def __init__(
+        self, drives: Mapping[str, DriveSettings], axes: Mapping[str, AxisConfig], bus: ModbusBus
+    ) -> None:
         self._bus = bus
         self._drives = dict(drives)
         self._axes: dict[str, _Axis] = {}
         self._state = LifecycleState.UNCONFIGURED
+        self._generation = -1
         self._events: list[DeviceEvent] = []
         self._axis_configs = dict(axes)
 
@@ -112,16 +122,28 @@ class ModbusMotion(MotionBackend):
     def axis_names(self) -> tuple[str, ...]:
         return tuple(self._drives)
 
+    def _sync_state(self) -> None:
+        """ACTIVE/INACTIVE on a link lost (or reopened by the other device) since this
+        device's configure is ERROR: only configure may follow."""
+        if self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE) and self._bus.stale(
+            self._generation
+        ):
+            self._state = LifecycleState.ERROR
+
     def configure(self) -> None:
         """Open the links and read every drive once: a drive that does not answer, or
         refuses the mapped block, fails here with its unit id and link named."""
-        if self._state not in (LifecycleState.UNCONFIGURED, LifecycleState.INACTIVE,
-                               LifecycleState.ERROR):
+        self._sync_state()
+        if self._state not in (
+            LifecycleState.UNCONFIGURED,
+            LifecycleState.INACTIVE,
+            LifecycleState.ERROR,
+        ):
             raise LifecycleError("modbus", f"configure in state {self._state.value}")
-        self._axes = {name: _Axis(s, self._axis_configs[name])
-                      for name, s in self._drives.items()}
+        self._axes = {name: _Axis(s, self._axis_configs[name]) for name, s in self._drives.items()}
         try:
             self._bus.acquire(USER)
+            self._generation = self._bus.generation
             for axis in self._axes.values():
                 self._read_axis(axis, tolerate=False)
         except DriverError:
@@ -150,12 +172,12 @@ class ModbusMotion(MotionBackend):
         link is gone (then the write raises CommunicationError after the state change)."""
         if self._state is not LifecycleState.ACTIVE:
             return
-        self._state = LifecycleState.INACTIVE
         for axis in self._axes.values():
             axis.commander.disable()
-        if self._bus.lost:
+        if self._bus.stale(self._generation):
             self._state = LifecycleState.ERROR
             return
+        self._state = LifecycleState.INACTIVE
         self._write_all({}, tolerate=False)
 
     def shutdown(self) -> None:
@@ -177,20 +199,21 @@ class ModbusMotion(MotionBackend):
         self._state = LifecycleState.ERROR
 
     def _check(self, *allowed: LifecycleState) -> None:
-        if self._bus.lost and self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE):
-            self._state = LifecycleState.ERROR
+        self._sync_state()
         if self._state not in allowed:
-            if self._state is LifecycleState.ERROR and self._bus.lost:
-                raise CommunicationError("modbus", "Modbus link lost; an operator's reset must "
-                                         "reconfigure the backend")
+            if self._state is LifecycleState.ERROR and self._bus.stale(self._generation):
+                raise CommunicationError(
+                    "modbus", "Modbus link lost; an operator's reset must reconfigure the backend"
+                )
             raise LifecycleError("modbus", f"not allowed in state {self._state.value}")
 
     def _axis(self, name: str) -> _Axis:
         try:
             return self._axes[name]
         except KeyError:
-            raise DriverError(name, "no such axis (known: "
-                              + ", ".join(self._drives) + ")") from None
+            raise DriverError(
+                name, "no such axis (known: " + ", ".join(self._drives) + ")"
+            ) from None
 
     # -- cyclic exchange -----------------------------------------------------------------------
     def _read_axis(self, axis: _Axis, *, tolerate: bool) -> AxisFeedback:
@@ -215,13 +238,26 @@ class ModbusMotion(MotionBackend):
             axis.homed = True
         feedback = axis.decode(block)
         if outcome is not None and not outcome.ok:
-            self._events.append(DeviceEvent(DeviceEventKind.EMERGENCY, axis.settings.axis,
-                                            axis.fault_code, f"homing failed: {outcome.reason}"))
-        if feedback.faulted and previous not in (Cia402State.FAULT,
-                                                 Cia402State.FAULT_REACTION_ACTIVE):
-            self._events.append(DeviceEvent(DeviceEventKind.EMERGENCY, axis.settings.axis,
-                                            feedback.fault_code,
-                                            f"drive fault {feedback.fault_code:#06x}"))
+            self._events.append(
+                DeviceEvent(
+                    DeviceEventKind.EMERGENCY,
+                    axis.settings.axis,
+                    axis.fault_code,
+                    f"homing failed: {outcome.reason}",
+                )
+            )
+        if feedback.faulted and previous not in (
+            Cia402State.FAULT,
+            Cia402State.FAULT_REACTION_ACTIVE,
+        ):
+            self._events.append(
+                DeviceEvent(
+                    DeviceEventKind.EMERGENCY,
+                    axis.settings.axis,
+                    feedback.fault_code,
+                    f"drive fault {feedback.fault_code:#06x}",
+                )
+            )
         axis.feedback = feedback
         return feedback
 
@@ -231,8 +267,14 @@ class ModbusMotion(MotionBackend):
 
     def write_setpoints(self, positions: Mapping[str, float]) -> None:
         self._check(LifecycleState.ACTIVE)
-        for name in positions:
-            self._axis(name)
+        for name, position in positions.items():
+            target = self._axis(name).settings.map.target
+            try:  # a bad setpoint is the caller's bug even while the drive ignores it
+                encode(
+                    position * self._drives[name].counts_per_unit, target.data_type, WordOrder.BIG
+                )
+            except (EncodeError, TypeError) as exc:
+                raise DriverError(name, f"setpoint {position!r}: {exc}") from None
         self._write_all(positions, tolerate=True)
 
     def _write_all(self, positions: Mapping[str, float], *, tolerate: bool) -> None:
@@ -255,8 +297,12 @@ class ModbusMotion(MotionBackend):
             except EncodeError as exc:
                 raise DriverError(name, f"target {positions.get(name)!r}: {exc}") from None
 
-            def write(link: ModbusLink, block: list[int] = block, unit: int =
-                      axis.address.device_id, start: int = start) -> None:
+            def write(
+                link: ModbusLink,
+                block: list[int] = block,
+                unit: int = axis.address.device_id,
+                start: int = start,
+            ) -> None:
                 link.write_registers(unit, start, block)
 
             try:
@@ -289,8 +335,11 @@ class ModbusMotion(MotionBackend):
         self._check(LifecycleState.ACTIVE)
         target = self._axis(axis)
         if target.settings.map.mode is None:
-            raise DriverError(axis, "homing needs the modes-of-operation register "
-                              "(backend.modbus.drive_map.mode is -1)")
+            raise DriverError(
+                axis,
+                "homing needs the modes-of-operation register "
+                "(backend.modbus.drive_map.mode is -1)",
+            )
         try:
             target.commander.start_homing()
         except ValueError as exc:

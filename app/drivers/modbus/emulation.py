@@ -46,8 +46,10 @@ class DriveRegisters:
     @property
     def last_address(self) -> int:
         """The highest register address the map uses."""
-        return max(f.end for f in self.settings.map.read_fields()
-                   + self.settings.map.write_fields()) - 1
+        return (
+            max(f.end for f in self.settings.map.read_fields() + self.settings.map.write_fields())
+            - 1
+        )
 
     def status_registers(self) -> dict[int, int]:
         """address -> register value of every status field, as the drive shows them now."""
@@ -60,9 +62,11 @@ class DriveRegisters:
             (m.velocity, feedback.velocity * s.velocity_counts_per_unit_s),
             (m.fault_code, feedback.fault_code),
         ]
-        inputs = (feedback.limit_negative << m.limit_negative_bit
-                  | feedback.limit_positive << m.limit_positive_bit
-                  | feedback.home_switch << m.home_switch_bit)
+        inputs = (
+            feedback.limit_negative << m.limit_negative_bit
+            | feedback.limit_positive << m.limit_positive_bit
+            | feedback.home_switch << m.home_switch_bit
+        )
         values.append((m.inputs, inputs))
         registers: dict[int, int] = {}
         for field, value in values:
@@ -83,12 +87,12 @@ class DriveRegisters:
         m = self.settings.map
 
         def get(field: Field | None) -> float | None:
-            if field is None or field.address < address or \
-                    field.end > address + len(values):
+            if field is None or field.address < address or field.end > address + len(values):
                 return None
             offset = field.address - address
-            return decode(values[offset:offset + field.data_type.registers], field.data_type,
-                          self._order)
+            return decode(
+                values[offset : offset + field.data_type.registers], field.data_type, self._order
+            )
 
         mode = get(m.mode)
         if mode is not None:
@@ -116,8 +120,10 @@ class CouplerBits:
         """Input bit (relative to inputs_address) -> electrical level."""
         image = self.world.inputs()
         s = self.settings
-        return {bit: bool(getattr(image, name)) != (name in s.inverted)
-                for name, bit in s.input_bits.items()}
+        return {
+            bit: bool(getattr(image, name)) != (name in s.inverted)
+            for name, bit in s.input_bits.items()
+        }
 
     def write_coils(self, address: int, values: list[bool]) -> None:
         s = self.settings
@@ -132,16 +138,24 @@ class MachineEmulation:
     """The whole machine as a Modbus master would find it: drives and coupler by unit name,
     one world, one lock (the server thread and the test's thread both touch it)."""
 
-    def __init__(self, config: MachineConfig, world: SimWorld | None = None,
-                 settings: ModbusSettings | None = None) -> None:
+    def __init__(
+        self,
+        config: MachineConfig,
+        world: SimWorld | None = None,
+        settings: ModbusSettings | None = None,
+    ) -> None:
         self.config = config
-        self.settings = settings if settings is not None else parse_modbus_settings(
-            config.backend_settings.get("modbus", {}), config)
+        self.settings = (
+            settings
+            if settings is not None
+            else parse_modbus_settings(config.backend_settings.get("modbus", {}), config)
+        )
         self.world = world if world is not None else SimWorld.from_config(config)
         self.lock = threading.RLock()
         self.drives: dict[str, DriveRegisters] = {
             axis: DriveRegisters(s, self.world.drives[axis])
-            for axis, s in self.settings.drives.items()}
+            for axis, s in self.settings.drives.items()
+        }
         self.coupler = CouplerBits(self.settings.coupler, self.world)
         self._read_since_advance: set[str] = set()
         self.periods = 0

@@ -93,30 +93,57 @@ class ModbusEmulator:
         sixteen_bits = [SimData(0, count=16, values=False, datatype=DataType.BITS)]
         if name == "io":
             c = emulation.settings.coupler
-            coils = [SimData(0, count=_round16(c.outputs_address + c.output_count),
-                             values=False, datatype=DataType.BITS)]
-            inputs = [SimData(0, count=_round16(c.inputs_address + c.input_count),
-                              values=False, datatype=DataType.BITS)]
+            coils = [
+                SimData(
+                    0,
+                    count=_round16(c.outputs_address + c.output_count),
+                    values=False,
+                    datatype=DataType.BITS,
+                )
+            ]
+            inputs = [
+                SimData(
+                    0,
+                    count=_round16(c.inputs_address + c.input_count),
+                    values=False,
+                    datatype=DataType.BITS,
+                )
+            ]
             blocks = (coils, inputs, one_register, list(one_register))
         else:
             drive = emulation.drives[name]
-            registers = [SimData(0, count=drive.last_address + 1, values=0,
-                                 datatype=DataType.REGISTERS)]
-            input_registers = (list(registers) if drive.table is RegisterTable.INPUT
-                               else one_register)
+            registers = [
+                SimData(0, count=drive.last_address + 1, values=0, datatype=DataType.REGISTERS)
+            ]
+            input_registers = (
+                list(registers) if drive.table is RegisterTable.INPUT else one_register
+            )
             blocks = (sixteen_bits, list(sixteen_bits), registers, input_registers)
 
-        async def action(function_code: int, start_address: int, address: int, count: int,
-                         registers: list[int],
-                         set_values: list[int] | list[bool] | None) -> ExcCodes | None:
-            return self._act(name, function_code, start_address, address, count, registers,
-                             set_values)
+        async def action(
+            function_code: int,
+            start_address: int,
+            address: int,
+            count: int,
+            registers: list[int],
+            set_values: list[int] | list[bool] | None,
+        ) -> ExcCodes | None:
+            return self._act(
+                name, function_code, start_address, address, count, registers, set_values
+            )
 
         return SimDevice(id=unit, simdata=blocks, action=action)
 
-    def _act(self, name: str, function_code: int, start_address: int, address: int,
-             count: int, registers: list[int],
-             set_values: list[int] | list[bool] | None) -> ExcCodes | None:
+    def _act(
+        self,
+        name: str,
+        function_code: int,
+        start_address: int,
+        address: int,
+        count: int,
+        registers: list[int],
+        set_values: list[int] | list[bool] | None,
+    ) -> ExcCodes | None:
         emulation = self.emulation
         with emulation.lock:
             self.requests[name] += 1
@@ -133,8 +160,9 @@ class ModbusEmulator:
                         index -= start_address
                         if 0 <= index < len(registers):
                             mask = 1 << shift
-                            registers[index] = (registers[index] | mask if level
-                                                else registers[index] & ~mask)
+                            registers[index] = (
+                                registers[index] | mask if level else registers[index] & ~mask
+                            )
                 elif function_code in WRITE_COIL_FUNCTIONS and set_values is not None:
                     coupler.write_coils(address, [bool(v) for v in set_values])
                 return None
@@ -157,6 +185,7 @@ class ModbusEmulator:
             if sending and len(data) > unit_offset and data[unit_offset] in self._muted_units:
                 return b""
             return data
+
         return trace
 
     def _trace_connect(self, connected: bool) -> None:
@@ -174,8 +203,7 @@ class ModbusEmulator:
     def _run(self, coroutine_factory: object) -> ModbusBaseServer:
         if self._loop is None:
             loop = asyncio.new_event_loop()
-            thread = threading.Thread(target=loop.run_forever, name="modbus-emulator",
-                                      daemon=True)
+            thread = threading.Thread(target=loop.run_forever, name="modbus-emulator", daemon=True)
             thread.start()
             self._loop, self._thread = loop, thread
         assert callable(coroutine_factory)
@@ -184,15 +212,19 @@ class ModbusEmulator:
         self._servers.append(server)
         return server
 
-    def serve_tcp(self, host: str = "127.0.0.1", port: int = 0,
-                  devices: Iterable[str] | None = None) -> int:
+    def serve_tcp(
+        self, host: str = "127.0.0.1", port: int = 0, devices: Iterable[str] | None = None
+    ) -> int:
         """Serve ``devices`` (default: all) on a TCP port; returns the port (0: ephemeral)."""
         sim_devices = self._devices(devices)
 
         async def start() -> ModbusTcpServer:
-            server = ModbusTcpServer(sim_devices, address=(host, port),
-                                     trace_packet=self._trace_packet(6),  # type: ignore[arg-type]
-                                     trace_connect=self._trace_connect)
+            server = ModbusTcpServer(
+                sim_devices,
+                address=(host, port),
+                trace_packet=self._trace_packet(6),  # type: ignore[arg-type]
+                trace_connect=self._trace_connect,
+            )
             await server.serve_forever(background=True)
             return server
 
@@ -203,16 +235,28 @@ class ModbusEmulator:
         bound: int = sockets[0].getsockname()[1]
         return bound
 
-    def serve_rtu(self, port: str, *, baudrate: int = 115200, parity: str = "E",
-                  stopbits: int = 1, devices: Iterable[str] | None = None) -> None:
+    def serve_rtu(
+        self,
+        port: str,
+        *,
+        baudrate: int = 115200,
+        parity: str = "E",
+        stopbits: int = 1,
+        devices: Iterable[str] | None = None,
+    ) -> None:
         """Serve ``devices`` (default: all) as RTU slaves on the serial device ``port``."""
         sim_devices = self._devices(devices)
 
         async def start() -> ModbusSerialServer:
-            server = ModbusSerialServer(sim_devices, port=port, baudrate=baudrate,
-                                        parity=parity, stopbits=stopbits,
-                                        trace_packet=self._trace_packet(0),  # type: ignore[arg-type]
-                                        trace_connect=self._trace_connect)
+            server = ModbusSerialServer(
+                sim_devices,
+                port=port,
+                baudrate=baudrate,
+                parity=parity,
+                stopbits=stopbits,
+                trace_packet=self._trace_packet(0),  # type: ignore[arg-type]
+                trace_connect=self._trace_connect,
+            )
             await server.serve_forever(background=True)
             return server
 
@@ -239,8 +283,12 @@ class ModbusEmulator:
     def __enter__(self) -> ModbusEmulator:
         return self
 
-    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
-                 tb: TracebackType | None) -> None:
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
         self.stop()
 
 
@@ -248,12 +296,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="python -m app.drivers.modbus.emulator",
         description="Serve the drives and I/O coupler of a Modbus machine configuration, "
-                    "emulated on the simulated machine.")
+        "emulated on the simulated machine.",
+    )
     parser.add_argument("--config", help="machine configuration (TOML) with [backend.modbus]")
     parser.add_argument("--host", default="127.0.0.1", help="TCP address to listen on")
     parser.add_argument("--port", type=int, default=5020, help="TCP port (0: any free one)")
-    parser.add_argument("--rtu", metavar="DEVICE", help="serve Modbus RTU on this serial "
-                        "device instead of TCP (line settings from the configuration)")
+    parser.add_argument(
+        "--rtu",
+        metavar="DEVICE",
+        help="serve Modbus RTU on this serial "
+        "device instead of TCP (line settings from the configuration)",
+    )
     parser.add_argument("--board-mm", type=float, help="put a board of this width on the table")
     args = parser.parse_args(argv)
     try:
@@ -270,9 +323,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if args.rtu:
             line = emulator.emulation.settings.link.serial
-            emulator.serve_rtu(args.rtu, baudrate=line.baudrate if line else 115200,
-                               parity=line.parity if line else "E",
-                               stopbits=line.stopbits if line else 1)
+            emulator.serve_rtu(
+                args.rtu,
+                baudrate=line.baudrate if line else 115200,
+                parity=line.parity if line else "E",
+                stopbits=line.stopbits if line else 1,
+            )
             print(f"listening rtu {args.rtu}", flush=True)
         else:
             port = emulator.serve_tcp(args.host, args.port)

@@ -79,8 +79,14 @@ class ModbusLink:
     """One connection. ``open`` connects once; after a loss only ``close`` and a new ``open``
     bring it back (that is the operator's reset, through the backend's ``configure``)."""
 
-    def __init__(self, name: str, timeout_s: float, *, endpoint: Endpoint | None = None,
-                 line: SerialLine | None = None) -> None:
+    def __init__(
+        self,
+        name: str,
+        timeout_s: float,
+        *,
+        endpoint: Endpoint | None = None,
+        line: SerialLine | None = None,
+    ) -> None:
         if (endpoint is None) == (line is None):
             raise ValueError("a link is either a TCP endpoint or a serial line")
         self.name = name
@@ -98,14 +104,20 @@ class ModbusLink:
         self.close()
         client: ModbusTcpClient | ModbusSerialClient
         if self._endpoint is not None:
-            client = ModbusTcpClient(self._endpoint.host, port=self._endpoint.port,
-                                     timeout=self.timeout_s, retries=0)
+            client = ModbusTcpClient(
+                self._endpoint.host, port=self._endpoint.port, timeout=self.timeout_s, retries=0
+            )
         else:
             assert self._line is not None
-            client = ModbusSerialClient(self._line.port, baudrate=self._line.baudrate,
-                                        bytesize=8, parity=self._line.parity,
-                                        stopbits=self._line.stopbits, timeout=self.timeout_s,
-                                        retries=0)
+            client = ModbusSerialClient(
+                self._line.port,
+                baudrate=self._line.baudrate,
+                bytesize=8,
+                parity=self._line.parity,
+                stopbits=self._line.stopbits,
+                timeout=self.timeout_s,
+                retries=0,
+            )
         # Our supervisor counts failures; pymodbus' own "close after N silent requests" would
         # only muddle that count.
         client.set_max_no_responses(1_000_000)
@@ -123,8 +135,9 @@ class ModbusLink:
         """The reason a connect failed, found again for the message (pymodbus only logs it)."""
         try:
             if self._endpoint is not None:
-                with socket.create_connection((self._endpoint.host, self._endpoint.port),
-                                              timeout=self.timeout_s):
+                with socket.create_connection(
+                    (self._endpoint.host, self._endpoint.port), timeout=self.timeout_s
+                ):
                     return "the server accepted a second attempt; try again"
             assert self._line is not None
             with serial.Serial(self._line.port):
@@ -138,8 +151,9 @@ class ModbusLink:
             return text
 
     # -- transactions ---------------------------------------------------------------------
-    def _execute(self, what: str, request: Callable[[ModbusTcpClient | ModbusSerialClient],
-                                                    ModbusPDU]) -> ModbusPDU:
+    def _execute(
+        self, what: str, request: Callable[[ModbusTcpClient | ModbusSerialClient], ModbusPDU]
+    ) -> ModbusPDU:
         client = self._client
         if client is None or not client.connected:
             self._client = None
@@ -153,8 +167,9 @@ class ModbusLink:
             if not client.connected:  # the socket closed while waiting
                 self.close()
                 raise LinkClosedError(f"{self.name}: connection lost") from None
-            raise NoReplyError(f"no reply to {what} within {self.timeout_s * 1000:.0f} ms") \
-                from None
+            raise NoReplyError(
+                f"no reply to {what} within {self.timeout_s * 1000:.0f} ms"
+            ) from None
         except ModbusException as exc:
             raise NoReplyError(f"invalid reply to {what} ({_short(exc)})") from None
         except OSError as exc:
@@ -164,16 +179,18 @@ class ModbusLink:
             raise ExceptionReplyError(reply.exception_code, what)
         return reply
 
-    def read_registers(self, table: RegisterTable, device_id: int, address: int,
-                       count: int) -> list[int]:
-        what = (f"reading {count} {table.value} registers from {address:#06x} "
-                f"(unit {device_id})")
+    def read_registers(
+        self, table: RegisterTable, device_id: int, address: int, count: int
+    ) -> list[int]:
+        what = f"reading {count} {table.value} registers from {address:#06x} (unit {device_id})"
         if table is RegisterTable.HOLDING:
-            reply = self._execute(what, lambda c: c.read_holding_registers(
-                address, count=count, device_id=device_id))
+            reply = self._execute(
+                what, lambda c: c.read_holding_registers(address, count=count, device_id=device_id)
+            )
         else:
-            reply = self._execute(what, lambda c: c.read_input_registers(
-                address, count=count, device_id=device_id))
+            reply = self._execute(
+                what, lambda c: c.read_input_registers(address, count=count, device_id=device_id)
+            )
         registers = list(reply.registers)
         if len(registers) != count:
             raise NoReplyError(f"{len(registers)} registers instead of {count} {what}")
@@ -181,13 +198,13 @@ class ModbusLink:
 
     def write_registers(self, device_id: int, address: int, values: Sequence[int]) -> None:
         what = f"writing {len(values)} registers from {address:#06x} (unit {device_id})"
-        self._execute(what, lambda c: c.write_registers(address, list(values),
-                                                        device_id=device_id))
+        self._execute(what, lambda c: c.write_registers(address, list(values), device_id=device_id))
 
     def read_discrete_inputs(self, device_id: int, address: int, count: int) -> list[bool]:
         what = f"reading {count} discrete inputs from {address} (unit {device_id})"
-        reply = self._execute(what, lambda c: c.read_discrete_inputs(
-            address, count=count, device_id=device_id))
+        reply = self._execute(
+            what, lambda c: c.read_discrete_inputs(address, count=count, device_id=device_id)
+        )
         bits = list(reply.bits)
         if len(bits) < count:
             raise NoReplyError(f"{len(bits)} inputs instead of {count} {what}")

@@ -88,8 +88,7 @@ def estimate_rtu_cycle(settings: ModbusSettings) -> RtuCycleEstimate | None:
         writes.append(transaction(f"{axis} write", write_req, write_rep))
     io = [transaction(label, req, rep) for label, req, rep in coupler_frames(settings.coupler)]
     # The order of one period: read_axes, read_inputs, write_setpoints, write_outputs.
-    return RtuCycleEstimate(character_s, gap_s, answer_s,
-                            tuple(reads + io[:1] + writes + io[1:]))
+    return RtuCycleEstimate(character_s, gap_s, answer_s, tuple(reads + io[:1] + writes + io[1:]))
 
 
 def check_period(settings: ModbusSettings, period_s: float, source: str = "") -> None:
@@ -100,9 +99,12 @@ def check_period(settings: ModbusSettings, period_s: float, source: str = "") ->
     serial = settings.link.serial
     assert serial is not None
     raise ConfigError(
-        "backend.period_ms", round(period_s * 1000.0, 3),
+        "backend.period_ms",
+        round(period_s * 1000.0, 3),
         f"at least {estimate.cycle_s * 1000.0:.1f} ms: one period's Modbus RTU traffic "
         f"({len(estimate.transactions)} transactions, {estimate.bytes_per_cycle} bytes at "
         f"{serial.baudrate} baud, {estimate.frame_gap_s * 1000:.2f} ms frame gaps, "
         f"{estimate.turnaround_s * 1000:.2f} ms answer delay) takes that long "
-        "(see the README, \"Modbus RTU limits\")", source)
+        '(see the README, "Modbus RTU limits")',
+        source,
+    )

@@ -144,8 +144,11 @@ class DriveMap:
     homing_mode_value: int  # 6: homing
 
     def read_fields(self) -> list[Field]:
-        return [f for f in (self.statusword, self.position, self.velocity, self.fault_code,
-                            self.inputs) if f is not None]
+        return [
+            f
+            for f in (self.statusword, self.position, self.velocity, self.fault_code, self.inputs)
+            if f is not None
+        ]
 
     def write_fields(self) -> list[Field]:
         return [f for f in (self.controlword, self.mode, self.target) if f is not None]
@@ -263,8 +266,9 @@ def _address(section: _Section, name: str, default: int, optional: bool) -> int 
     return value
 
 
-def _field(section: _Section, name: str, d: Mapping[str, Any], data_type: DataType,
-           optional: bool = False) -> Field | None:
+def _field(
+    section: _Section, name: str, d: Mapping[str, Any], data_type: DataType, optional: bool = False
+) -> Field | None:
     address = _address(section, name, d[name], optional)
     return None if address is None else Field(address, data_type)
 
@@ -277,9 +281,11 @@ def _check_disjoint(section: _Section, named: list[tuple[str, Field]]) -> None:
     ordered = sorted(named, key=lambda item: item[1].address)
     for (name_a, a), (name_b, b) in pairwise(ordered):
         if b.address < a.end:
-            raise section.error(name_b, b.address,
-                                f"an address not inside {name_a} "
-                                f"({a.address:#06x}-{a.end - 1:#06x})")
+            raise section.error(
+                name_b,
+                b.address,
+                f"an address not inside {name_a} ({a.address:#06x}-{a.end - 1:#06x})",
+            )
 
 
 def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
@@ -287,8 +293,9 @@ def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
     or missing ones taken from :data:`DEFAULT_DRIVE_MAP`)."""
     s = _Section(raw, path, source)
     d = DEFAULT_DRIVE_MAP
-    table = RegisterTable(s.text("status_table", d["status_table"],
-                                 tuple(t.value for t in RegisterTable)))
+    table = RegisterTable(
+        s.text("status_table", d["status_table"], tuple(t.value for t in RegisterTable))
+    )
     position_type = _data_type(s, "position_type", d)
     velocity_type = _data_type(s, "velocity_type", d)
     statusword = _field(s, "statusword", d, DataType.UINT16)
@@ -296,66 +303,111 @@ def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
     velocity = _field(s, "velocity", d, velocity_type, optional=True)
     fault_code = _field(s, "fault_code", d, DataType.UINT16, optional=True)
     inputs = _field(s, "inputs", d, DataType.UINT16, optional=True)
-    bits = {name: s.integer(name, d[name], 0, 15)
-            for name in ("limit_negative_bit", "limit_positive_bit", "home_switch_bit")}
+    bits = {
+        name: s.integer(name, d[name], 0, 15)
+        for name in ("limit_negative_bit", "limit_positive_bit", "home_switch_bit")
+    }
     controlword = _field(s, "controlword", d, DataType.UINT16)
     mode = _field(s, "mode", d, DataType.INT16, optional=True)
     target = _field(s, "target", d, position_type)
-    word_order = WordOrder(s.text("word_order", d["word_order"],
-                                  tuple(w.value for w in WordOrder)))
+    word_order = WordOrder(s.text("word_order", d["word_order"], tuple(w.value for w in WordOrder)))
     position_mode = s.integer("position_mode_value", d["position_mode_value"], -128, 127)
     homing_mode = s.integer("homing_mode_value", d["homing_mode_value"], -128, 127)
     s.finish()
     assert statusword and position and controlword and target  # mandatory: never None
 
     if inputs is not None and len(set(bits.values())) < len(bits):
-        raise s.error("home_switch_bit", bits["home_switch_bit"],
-                      "a bit different from limit_negative_bit and limit_positive_bit")
-    read = [(n, f) for n, f in (("statusword", statusword), ("position", position),
-                                ("velocity", velocity), ("fault_code", fault_code),
-                                ("inputs", inputs)) if f is not None]
-    write = [(n, f) for n, f in (("controlword", controlword), ("mode", mode),
-                                 ("target", target)) if f is not None]
+        raise s.error(
+            "home_switch_bit",
+            bits["home_switch_bit"],
+            "a bit different from limit_negative_bit and limit_positive_bit",
+        )
+    read = [
+        (n, f)
+        for n, f in (
+            ("statusword", statusword),
+            ("position", position),
+            ("velocity", velocity),
+            ("fault_code", fault_code),
+            ("inputs", inputs),
+        )
+        if f is not None
+    ]
+    write = [
+        (n, f)
+        for n, f in (("controlword", controlword), ("mode", mode), ("target", target))
+        if f is not None
+    ]
     _check_disjoint(s, read)
     _check_disjoint(s, write)
     if table is RegisterTable.HOLDING:
         _check_disjoint(s, read + write)
     for name, f in read + write:
         if f.end - 1 > _ADDRESS_MAX:
-            raise s.error(name, f.address, f"an address up to {_ADDRESS_MAX - 1:#06x} "
-                          f"(a {f.data_type.value} needs {f.data_type.registers} registers)")
+            raise s.error(
+                name,
+                f.address,
+                f"an address up to {_ADDRESS_MAX - 1:#06x} "
+                f"(a {f.data_type.value} needs {f.data_type.registers} registers)",
+            )
     read_start = min(f.address for _, f in read)
     read_end = max(f.end for _, f in read)
     if read_end - read_start > MAX_READ_REGISTERS:
         last = max(read, key=lambda item: item[1].end)
-        raise s.error(last[0], last[1].address,
-                      f"an address within {MAX_READ_REGISTERS} registers of the first status "
-                      f"field ({read_start:#06x}): the status block is read in one request")
+        raise s.error(
+            last[0],
+            last[1].address,
+            f"an address within {MAX_READ_REGISTERS} registers of the first status "
+            f"field ({read_start:#06x}): the status block is read in one request",
+        )
     ordered = sorted(write, key=lambda item: item[1].address)
     for (name_a, a), (name_b, b) in pairwise(ordered):
         if b.address != a.end:
-            raise s.error(name_b, b.address,
-                          f"{a.end:#06x}, right after {name_a}: controlword, mode and target "
-                          "are written in one request and must be contiguous")
+            raise s.error(
+                name_b,
+                b.address,
+                f"{a.end:#06x}, right after {name_a}: controlword, mode and target "
+                "are written in one request and must be contiguous",
+            )
     if position_mode == homing_mode:
-        raise s.error("homing_mode_value", homing_mode,
-                      f"a value different from position_mode_value ({position_mode})")
-    return DriveMap(table, statusword, position, velocity, fault_code, inputs,
-                    bits["limit_negative_bit"], bits["limit_positive_bit"],
-                    bits["home_switch_bit"], controlword, mode, target, word_order,
-                    position_mode, homing_mode)
+        raise s.error(
+            "homing_mode_value",
+            homing_mode,
+            f"a value different from position_mode_value ({position_mode})",
+        )
+    return DriveMap(
+        table,
+        statusword,
+        position,
+        velocity,
+        fault_code,
+        inputs,
+        bits["limit_negative_bit"],
+        bits["limit_positive_bit"],
+        bits["home_switch_bit"],
+        controlword,
+        mode,
+        target,
+        word_order,
+        position_mode,
+        homing_mode,
+    )
 
 
-def _endpoint(section: _Section, raw: Mapping[str, Any], path: str, link: LinkSettings,
-              source: str) -> Endpoint | None:
+def _endpoint(
+    section: _Section, raw: Mapping[str, Any], path: str, link: LinkSettings, source: str
+) -> Endpoint | None:
     """A device's own TCP server (``host``/``port`` keys), or None to use the link's."""
     present = [name for name in ("host", "port") if name in raw]
     if not present:
         return None
     if link.transport is Transport.RTU:
-        raise ConfigError(f"{path}.{present[0]}", raw[present[0]],
-                          "absent: on Modbus RTU every device is on backend.modbus.serial_port",
-                          source)
+        raise ConfigError(
+            f"{path}.{present[0]}",
+            raw[present[0]],
+            "absent: on Modbus RTU every device is on backend.modbus.serial_port",
+            source,
+        )
     assert link.endpoint is not None
     host = section.text("host", link.endpoint.host)
     if not host.strip():
@@ -375,37 +427,56 @@ def _parse_link(s: _Section, raw: Mapping[str, Any], path: str, source: str) -> 
     if transport is Transport.TCP:
         for rtu_only in ("serial_port", "baudrate", "parity", "stopbits", "rtu_frame_gap_ms"):
             if rtu_only in raw:
-                raise ConfigError(f"{path}.{rtu_only}", raw[rtu_only],
-                                  'absent for transport = "tcp" (an RTU setting)', source)
+                raise ConfigError(
+                    f"{path}.{rtu_only}",
+                    raw[rtu_only],
+                    'absent for transport = "tcp" (an RTU setting)',
+                    source,
+                )
         host = s.text("host", "")
         if not host.strip():
-            raise s.error("host", host, "a host name or IP address of the Modbus TCP server "
-                          '(for transport = "tcp")')
+            raise s.error(
+                "host",
+                host,
+                'a host name or IP address of the Modbus TCP server (for transport = "tcp")',
+            )
         endpoint = Endpoint(host.strip(), s.integer("port", 502, 1, 65535))
         gap_s = 0.0
     else:
         for tcp_only in ("host", "port"):
             if tcp_only in raw:
-                raise ConfigError(f"{path}.{tcp_only}", raw[tcp_only],
-                                  'absent for transport = "rtu" (a TCP setting)', source)
+                raise ConfigError(
+                    f"{path}.{tcp_only}",
+                    raw[tcp_only],
+                    'absent for transport = "rtu" (a TCP setting)',
+                    source,
+                )
         port = s.text("serial_port", "")
         if not port.strip():
-            raise s.error("serial_port", port, "a serial device such as /dev/ttyUSB0 "
-                          '(for transport = "rtu")')
+            raise s.error(
+                "serial_port", port, 'a serial device such as /dev/ttyUSB0 (for transport = "rtu")'
+            )
         baudrate = s.integer("baudrate", 115200, 1200, 4_000_000)
-        serial = SerialLine(port.strip(), baudrate, s.text("parity", "E", ("N", "E", "O")),
-                            s.integer("stopbits", 1, 1, 2))
+        serial = SerialLine(
+            port.strip(),
+            baudrate,
+            s.text("parity", "E", ("N", "E", "O")),
+            s.integer("stopbits", 1, 1, 2),
+        )
         # Modbus over serial line V1.02, 2.5.1.1: t3.5 is 3.5 characters up to 19200 baud,
         # and a fixed 1.75 ms above.
-        spec_gap_ms = (3.5 * serial.bits_per_character / baudrate * 1000.0
-                       if baudrate <= 19200 else 1.75)
+        spec_gap_ms = (
+            3.5 * serial.bits_per_character / baudrate * 1000.0 if baudrate <= 19200 else 1.75
+        )
         gap_s = s.number("rtu_frame_gap_ms", spec_gap_ms, 0.0, 1000.0) / 1000.0
-    return LinkSettings(transport, endpoint, serial, timeout_s, retries, failures,
-                        turnaround_s, gap_s)
+    return LinkSettings(
+        transport, endpoint, serial, timeout_s, retries, failures, turnaround_s, gap_s
+    )
 
 
-def _sub(parent: _Section, name: str, path: str, source: str,
-         exclude: tuple[str, ...] = ()) -> tuple[_Section, dict[str, Any]]:
+def _sub(
+    parent: _Section, name: str, path: str, source: str, exclude: tuple[str, ...] = ()
+) -> tuple[_Section, dict[str, Any]]:
     """A sub-table as a checked section plus its raw values (``exclude``: keys the caller
     reads itself, such as lists)."""
     raw = parent.raw_table(name)
@@ -413,9 +484,14 @@ def _sub(parent: _Section, name: str, path: str, source: str,
     return section, raw
 
 
-def _parse_drive(drives: _Section, axis: str, link: LinkSettings,
-                 shared_map_raw: Mapping[str, Any], shared_map: DriveMap,
-                 source: str) -> DriveSettings:
+def _parse_drive(
+    drives: _Section,
+    axis: str,
+    link: LinkSettings,
+    shared_map_raw: Mapping[str, Any],
+    shared_map: DriveMap,
+    source: str,
+) -> DriveSettings:
     path = f"backend.modbus.drives.{axis}"
     s, raw = _sub(drives, axis, path, source, exclude=("map",))
     device_id = s.integer("device_id", DEFAULT_DEVICE_IDS.get(axis, 1), 1, 247)
@@ -462,8 +538,9 @@ def _parse_coupler(root: _Section, link: LinkSettings, source: str) -> CouplerSe
     input_bits = _bit_table(inputs_section, INPUT_NAMES, DEFAULT_INPUT_BITS)
     for name in MUST_BE_WIRED:
         if name not in input_bits:
-            raise inputs_section.error(name, -1, "a bit from 0: the safety chain's state must "
-                                       "be read from a wire")
+            raise inputs_section.error(
+                name, -1, "a bit from 0: the safety chain's state must be read from a wire"
+            )
     output_bits = _bit_table(s.table("outputs"), OUTPUT_NAMES, DEFAULT_OUTPUT_BITS)
     s.finish()
     inverted_raw = raw.get("inverted", [])
@@ -474,17 +551,28 @@ def _parse_coupler(root: _Section, link: LinkSettings, source: str) -> CouplerSe
         if name not in INPUT_NAMES:
             raise ConfigError(f"{path}.inverted", name, allowed, source)
         if name not in input_bits:
-            raise ConfigError(f"{path}.inverted", name, f"a wired input ({name} is set to -1)",
-                              source)
-    for kind, count, address in (("inputs", max(input_bits.values()) + 1, inputs_address),
-                                 ("outputs", max(output_bits.values(), default=-1) + 1,
-                                  outputs_address)):
+            raise ConfigError(
+                f"{path}.inverted", name, f"a wired input ({name} is set to -1)", source
+            )
+    for kind, count, address in (
+        ("inputs", max(input_bits.values()) + 1, inputs_address),
+        ("outputs", max(output_bits.values(), default=-1) + 1, outputs_address),
+    ):
         if address + count - 1 > _ADDRESS_MAX:
-            raise s.error(f"{kind}_address", address,
-                          f"an address up to {_ADDRESS_MAX + 1 - count:#06x} "
-                          f"({count} {kind} follow it)")
-    return CouplerSettings(device_id, endpoint, inputs_address, outputs_address, input_bits,
-                           output_bits, frozenset(inverted_raw))
+            raise s.error(
+                f"{kind}_address",
+                address,
+                f"an address up to {_ADDRESS_MAX + 1 - count:#06x} ({count} {kind} follow it)",
+            )
+    return CouplerSettings(
+        device_id,
+        endpoint,
+        inputs_address,
+        outputs_address,
+        input_bits,
+        output_bits,
+        frozenset(inverted_raw),
+    )
 
 
 def parse_modbus_settings(raw: object, config: MachineConfig) -> ModbusSettings:
@@ -497,19 +585,25 @@ def parse_modbus_settings(raw: object, config: MachineConfig) -> ModbusSettings:
     map_raw = {**DEFAULT_DRIVE_MAP, **s.raw_table("drive_map")}
     shared_map = parse_drive_map(map_raw, f"{path}.drive_map", config.source)
     drives_section = s.table("drives")
-    drives = {axis: _parse_drive(drives_section, axis, link, map_raw, shared_map, config.source)
-              for axis in config.axes}
+    drives = {
+        axis: _parse_drive(drives_section, axis, link, map_raw, shared_map, config.source)
+        for axis in config.axes
+    }
     drives_section.finish()
     coupler = _parse_coupler(s, link, config.source)
     s.finish()
 
     units: dict[tuple[Endpoint | None, int], str] = {}
-    for name, (endpoint, device_id) in [(f"drives.{a}", (d.endpoint, d.device_id))
-                                        for a, d in drives.items()] + \
-            [("io", (coupler.endpoint, coupler.device_id))]:
+    for name, (endpoint, device_id) in [
+        (f"drives.{a}", (d.endpoint, d.device_id)) for a, d in drives.items()
+    ] + [("io", (coupler.endpoint, coupler.device_id))]:
         other = units.get((endpoint, device_id))
         if other is not None:
-            raise ConfigError(f"{path}.{name}.device_id", device_id,
-                              f"a unit id not already used by {path}.{other}", config.source)
+            raise ConfigError(
+                f"{path}.{name}.device_id",
+                device_id,
+                f"a unit id not already used by {path}.{other}",
+                config.source,
+            )
         units[(endpoint, device_id)] = name
     return ModbusSettings(link, drives, coupler)

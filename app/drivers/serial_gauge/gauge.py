@@ -1,7 +1,8 @@
 """The width gauge on a serial port: :class:`WidthGauge` with pyserial.
 
 How a reading is taken: ``request()`` arms the gauge (request mode: flushes stale input and
-sends the request string; stream mode: skips to the start of the next line); each ``poll()``
+sends the request string; stream mode: flushes stale input and skips to the start of the
+next line); each ``poll()``
 reads what has arrived without waiting (pyserial ``timeout=0``), keeps partial lines, and
 returns the first complete line after the request as a :class:`GaugeReading`, once. Garbage
 and out-of-range values come back as readings with ``width_mm=None`` and the reason in
@@ -44,8 +45,9 @@ CONFIGURE_POLL_S = 0.002
 
 
 class SerialWidthGauge(WidthGauge):
-    def __init__(self, settings: SerialGaugeSettings,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(
+        self, settings: SerialGaugeSettings, clock: Callable[[], float] = time.monotonic
+    ) -> None:
         self.settings = settings
         self._clock = clock
         self._port: serial.Serial | None = None
@@ -62,15 +64,25 @@ class SerialWidthGauge(WidthGauge):
     def configure(self) -> None:
         """Open the port and check the gauge answers (one request, or one streamed line,
         within ``reply_timeout_ms``)."""
-        if self._state not in (LifecycleState.UNCONFIGURED, LifecycleState.INACTIVE,
-                               LifecycleState.ERROR):
+        if self._state not in (
+            LifecycleState.UNCONFIGURED,
+            LifecycleState.INACTIVE,
+            LifecycleState.ERROR,
+        ):
             raise LifecycleError(DEVICE, f"configure in state {self._state.value}")
         self._close()
         s = self.settings
         try:
-            self._port = serial.Serial(s.port, baudrate=s.baudrate, bytesize=s.bytesize,
-                                       parity=s.parity, stopbits=s.stopbits, timeout=0,
-                                       write_timeout=s.reply_timeout_s, exclusive=True)
+            self._port = serial.Serial(
+                s.port,
+                baudrate=s.baudrate,
+                bytesize=s.bytesize,
+                parity=s.parity,
+                stopbits=s.stopbits,
+                timeout=0,
+                write_timeout=s.reply_timeout_s,
+                exclusive=True,
+            )
         except (serial.SerialException, OSError, ValueError) as exc:
             self._state = LifecycleState.ERROR
             raise CommunicationError(DEVICE, f"cannot open {s.port}: {_reason(exc)}") from None
@@ -112,6 +124,11 @@ class SerialWidthGauge(WidthGauge):
                 self._port.close()
             self._port = None
 
+    def fileno(self) -> int:
+        """The port's file descriptor, for ``select()`` in tools and tests that want to wait
+        for the gauge instead of polling; -1 while the port is closed."""
+        return int(self._port.fileno()) if self._port is not None else -1
+
     def _require_active(self) -> serial.Serial:
         if self._state is not LifecycleState.ACTIVE or self._port is None:
             raise LifecycleError(DEVICE, f"not allowed in state {self._state.value}")
@@ -146,6 +163,9 @@ class SerialWidthGauge(WidthGauge):
                 port.write(s.request)
                 port.flush()
             else:
+                # Lines already queued are older than the request; the flush may cut one
+                # in half, so the reading starts after the next terminator.
+                port.reset_input_buffer()
                 self._buffer.resync()
         except (serial.SerialException, OSError) as exc:
             self._lost(exc)
@@ -178,15 +198,21 @@ class SerialWidthGauge(WidthGauge):
         self._close()
         self._armed = False
         self._state = LifecycleState.ERROR
-        raise CommunicationError(DEVICE, f"{self.settings.port} is gone (gauge unplugged?): "
-                                 f"{_reason(exc)}") from None
+        raise CommunicationError(
+            DEVICE, f"{self.settings.port} is gone (gauge unplugged?): {_reason(exc)}"
+        ) from None
 
     def _silence_message(self) -> str:
         s = self.settings
-        what = ("no answer to the request" if s.mode is GaugeMode.REQUEST
-                else "no line from the streaming gauge")
-        return (f"{what} within {s.reply_timeout_s * 1000:.0f} ms on {s.port} "
-                f"(gauge off or unplugged, baud rate or terminator wrong?)")
+        what = (
+            "no answer to the request"
+            if s.mode is GaugeMode.REQUEST
+            else "no line from the streaming gauge"
+        )
+        return (
+            f"{what} within {s.reply_timeout_s * 1000:.0f} ms on {s.port} "
+            f"(gauge off or unplugged, baud rate or terminator wrong?)"
+        )
 
 
 def _reason(exc: BaseException) -> str:

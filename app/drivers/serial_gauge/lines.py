@@ -53,7 +53,7 @@ class LineBuffer:
             if end < 0:
                 break
             line = bytes(self._buffer[:end])
-            del self._buffer[:end + len(term)]
+            del self._buffer[: end + len(term)]
             if self._skipping:
                 self._skipping = False
                 continue
@@ -63,7 +63,7 @@ class LineBuffer:
             if not self._skipping:
                 out.append(Overflow(len(self._buffer), bytes(self._buffer[:32])))
             keep = len(term) - 1
-            del self._buffer[:len(self._buffer) - keep]
+            del self._buffer[: len(self._buffer) - keep]
             self._skipping = True
         return out
 
@@ -76,29 +76,38 @@ def _printable(raw: bytes | str) -> str:
 def parse_line(line: bytes | Overflow, settings: SerialGaugeSettings) -> GaugeReading | None:
     """The reading one line gives; None for an empty line (a stray CR or LF)."""
     if isinstance(line, Overflow):
-        return GaugeReading(None, raw=line.head.decode("ascii", errors="backslashreplace"),
-                            error=f"garbage: {line.size} bytes without a line terminator "
-                                  f"(baud rate or terminator wrong?), starting "
-                                  f"{_printable(line.head)}")
+        return GaugeReading(
+            None,
+            raw=line.head.decode("ascii", errors="backslashreplace"),
+            error=f"garbage: {line.size} bytes without a line terminator "
+            f"(baud rate or terminator wrong?), starting "
+            f"{_printable(line.head)}",
+        )
     text = line.decode(settings.encoding, errors="replace").strip()
     if not text:
         return None
     match = settings.pattern.search(text)
     if match is None:
-        return GaugeReading(None, raw=text, error=f"garbage: {_printable(text)} does not match "
-                            "gauge.serial.pattern")
+        return GaugeReading(
+            None, raw=text, error=f"garbage: {_printable(text)} does not match gauge.serial.pattern"
+        )
     try:
         value = float(match.group("width"))
     except (TypeError, ValueError):
-        return GaugeReading(None, raw=text, error=f"garbage: {_printable(match.group('width'))}"
-                            " is not a number")
+        return GaugeReading(
+            None, raw=text, error=f"garbage: {_printable(match.group('width'))} is not a number"
+        )
     width_mm = value * settings.unit_scale
     if not math.isfinite(width_mm):
-        return GaugeReading(None, raw=text, error=f"garbage: {_printable(text)} is not a "
-                            "finite number")
+        return GaugeReading(
+            None, raw=text, error=f"garbage: {_printable(text)} is not a finite number"
+        )
     if not settings.min_width_mm <= width_mm <= settings.max_width_mm:
-        return GaugeReading(None, raw=text,
-                            error=f"out of range: {width_mm:g} mm is outside the gauge's "
-                                  f"range {settings.min_width_mm:g} to "
-                                  f"{settings.max_width_mm:g} mm")
+        return GaugeReading(
+            None,
+            raw=text,
+            error=f"out of range: {width_mm:g} mm is outside the gauge's "
+            f"range {settings.min_width_mm:g} to "
+            f"{settings.max_width_mm:g} mm",
+        )
     return GaugeReading(width_mm, raw=text)

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from app.config import ConfigError, MachineConfig, _Section
 
-DEFAULT_PATTERN = r"^\s*[A-Za-z]*\s*[=:]?\s*(?P<width>[-+]?\d+(?:\.\d*)?)\s*(?:mm)?\s*$"
+DEFAULT_PATTERN = r"^\s*(?:W\s*[=:]?\s*)?(?P<width>[-+]?\d+(?:\.\d*)?)\s*(?:mm)?\s*$"
 
 
 class GaugeMode(enum.Enum):
@@ -47,8 +47,9 @@ def _encode(section: _Section, name: str, text: str) -> bytes:
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:
-        raise section.error(name, text, "ASCII characters (escapes such as \\r, \\n, "
-                            "\\u0002 are fine)") from None
+        raise section.error(
+            name, text, "ASCII characters (escapes such as \\r, \\n, \\u0002 are fine)"
+        ) from None
 
 
 def parse_serial_gauge_settings(raw: object, config: MachineConfig) -> SerialGaugeSettings:
@@ -77,8 +78,11 @@ def parse_serial_gauge_settings(raw: object, config: MachineConfig) -> SerialGau
     except re.error as exc:
         raise s.error("pattern", pattern_text, f"a valid regular expression ({exc})") from None
     if "width" not in pattern.groupindex:
-        raise s.error("pattern", pattern_text, "a regular expression with a named group "
-                      "(?P<width>...) around the number")
+        raise s.error(
+            "pattern",
+            pattern_text,
+            "a regular expression with a named group (?P<width>...) around the number",
+        )
     unit_scale = s.number("unit_scale", 1.0, 0.0, 1e6, exclusive_minimum=True)
     min_mm = s.number("min_width_mm", 30.0, 0.0, 10_000.0)
     max_mm = s.number("max_width_mm", 300.0, 0.0, 10_000.0)
@@ -87,6 +91,19 @@ def parse_serial_gauge_settings(raw: object, config: MachineConfig) -> SerialGau
     timeout_s = s.number("reply_timeout_ms", 500.0, 1.0, 60_000.0) / 1000.0
     max_line = s.integer("max_line_bytes", 128, 8, 65536)
     s.finish()
-    return SerialGaugeSettings(port.strip(), baudrate, bytesize, parity, stopbits, mode,
-                               request, terminator, pattern, unit_scale, min_mm, max_mm,
-                               timeout_s, max_line)
+    return SerialGaugeSettings(
+        port.strip(),
+        baudrate,
+        bytesize,
+        parity,
+        stopbits,
+        mode,
+        request,
+        terminator,
+        pattern,
+        unit_scale,
+        min_mm,
+        max_mm,
+        timeout_s,
+        max_line,
+    )
