@@ -15,6 +15,53 @@ from app.drivers.sim.backend import SimIO, SimMotion, create_backend
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.world import SimWorld
 
+# The axis values these tests are written against, pinned so that a change of the shipped
+# machine.toml (travel, switch positions) does not silently change what a test checks.
+PINNED_AXES: dict[str, dict[str, Any]] = {
+    "X": {
+        "min_position": -5.0,
+        "max_position": 3900.0,
+        "home_switch_position": -5.0,
+        "limit_switch_margin": 5.0,
+        "homing_direction": -1,
+        "homing_velocity": 40.0,
+        "max_velocity": 400.0,
+        "max_acceleration": 2000.0,
+        "jog_acceleration": 500.0,
+        "following_error_limit": 2.0,
+        "encoder": "incremental",
+        "home_position": 0.0,
+    },
+    "Y": {
+        "min_position": -5.0,
+        "max_position": 800.0,
+        "home_switch_position": -5.0,
+        "limit_switch_margin": 5.0,
+        "homing_direction": -1,
+        "homing_velocity": 30.0,
+        "max_velocity": 300.0,
+        "max_acceleration": 2000.0,
+        "jog_acceleration": 500.0,
+        "following_error_limit": 2.0,
+        "encoder": "incremental",
+        "home_position": 0.0,
+    },
+    "Z": {
+        "min_position": -15.0,
+        "max_position": 15.0,
+        "home_switch_position": -15.0,
+        "limit_switch_margin": 2.0,
+        "homing_direction": -1,
+        "homing_velocity": 3.0,
+        "max_velocity": 30.0,
+        "max_acceleration": 150.0,
+        "jog_acceleration": 40.0,
+        "following_error_limit": 0.5,
+        "encoder": "absolute",
+        "home_position": 0.0,
+    },
+}
+
 
 def make_config(
     sim: Mapping[str, Any] | None = None,
@@ -23,10 +70,13 @@ def make_config(
     io: Mapping[str, Any] | None = None,
     period_ms: float | None = None,
 ) -> MachineConfig:
-    """The shipped configuration with some tables overridden (keys merged per table)."""
+    """The shipped configuration, axes pinned to :data:`PINNED_AXES`, with some tables
+    overridden (keys merged per table)."""
     data = tomllib.loads(default_config_path().read_text(encoding="utf-8"))
     data["backend"]["sim"] = dict(sim or {})
     data["gauge"]["sim"] = dict(gauge or {})
+    for name, values in PINNED_AXES.items():
+        data["axes"][name].update(values)
     for name, values in (axes or {}).items():
         data["axes"][name].update(values)
     data["io"].update(io or {})

@@ -198,7 +198,7 @@ def test_disabling_interrupts_homing() -> None:
     assert fb.power_state is S.SWITCH_ON_DISABLED
 
 
-def test_tilt_axis_homes_in_degrees_with_the_shipped_configuration() -> None:
+def test_the_tilt_axis_homes_in_degrees() -> None:
     rig = Rig(make_config({"start_position": {"Z": 3.0}}))
     home(rig, "Z", timeout_s=30.0)
     fb = rig.fb("Z")
