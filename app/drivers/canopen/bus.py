@@ -16,6 +16,7 @@ whose heartbeat stops becomes COMMUNICATION_LOST for the device that owns it.
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import threading
 import time
@@ -52,7 +53,6 @@ class _NodeEntry:
     owner: str  # "motion" or "io": whose event queue its events go to
     label: str  # device name in events and errors, e.g. "X (node 1)"
     last_emcy_code: int = 0
-    booted: bool = False  # a boot-up message was seen since the flag was last taken
     beats: int = 0  # heartbeats received
     subscriptions: list[tuple[int, Callable[[int, bytearray, float], None]]] = field(
         default_factory=list)
@@ -74,6 +74,7 @@ class CanopenBus:
         self._shared: deque[DeviceEvent] = deque()
         self._lost: dict[int, str] = {}
         self._thread_error: str = ""
+        self._booted: set[int] = set()  # nodes whose boot-up message was seen
         self.sync_seq = 0
         self.sync_is_feedback = False  # the latest SYNC was sent to refresh feedback
         self.sync_time_s = 0.0  # monotonic time the latest SYNC was sent
@@ -81,6 +82,8 @@ class CanopenBus:
 
     # ---- connection ----
     def acquire(self) -> None:
+        if self._network is not None and self._thread_error:
+            self._disconnect()  # its receive thread is dead: only a new connection helps
         if self._network is None:
             network = canopen.Network()
             network.NOTIFIER_CYCLE = NOTIFIER_CYCLE_S
@@ -97,14 +100,19 @@ class CanopenBus:
 
     def release(self) -> None:
         self._users = max(0, self._users - 1)
-        if self._users == 0 and self._network is not None:
-            network, self._network = self._network, None
-            self._nodes.clear()
-            try:
-                network.disconnect()
-            except Exception as exc:  # the notifier's stored exception is re-raised here
-                log.warning("%s: disconnect: %s", self.label, exc)
-            log.info("disconnected from %s", self.label)
+        if self._users == 0:
+            self._disconnect()
+
+    def _disconnect(self) -> None:
+        if self._network is None:
+            return
+        network, self._network = self._network, None
+        self._nodes.clear()
+        try:
+            network.disconnect()
+        except Exception as exc:  # the notifier's stored exception is re-raised here
+            log.warning("%s: disconnect: %s", self.label, exc)
+        log.info("disconnected from %s", self.label)
 
     @property
     def network(self) -> canopen.Network:
@@ -164,7 +172,8 @@ class CanopenBus:
             entry = self._nodes.get(node_id)
             if entry is not None:
                 entry.beats += 1
-                entry.booted = entry.booted or state == 0x00
+            if state == 0x00:
+                self._booted.add(node_id)
             self.condition.notify_all()
 
     def _on_emcy(self, entry: _NodeEntry, emcy: EmcyError) -> None:
@@ -191,12 +200,16 @@ class CanopenBus:
                 entry.last_emcy_code = 0
 
     def take_booted(self, node_id: int) -> bool:
+        """True once after a boot-up message of this node (kept across re-configuration)."""
         with self.condition:
-            entry = self._nodes.get(node_id)
-            if entry is None or not entry.booted:
+            if node_id not in self._booted:
                 return False
-            entry.booted = False
+            self._booted.discard(node_id)
             return True
+
+    @property
+    def receive_failed(self) -> bool:
+        return bool(self._thread_error)
 
     # ---- sending (machine loop) ----
     def check(self) -> None:
@@ -284,7 +297,10 @@ class CanopenBus:
 
     # ---- supervision (machine loop) ----
     def supervise(self) -> None:
-        """Turn heartbeat changes into events for the owning device."""
+        """Turn heartbeat changes, and a receive thread that died, into events."""
+        if self._network is not None and not self._thread_error:
+            with contextlib.suppress(CommunicationError):
+                self.check()
         for change in self.watchdog.poll():
             self._heartbeat_change(change)
 

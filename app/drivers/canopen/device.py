@@ -152,8 +152,7 @@ class CanopenDevice:
         try:
             self._stop_exchange()
             for node_id in self._nodes():
-                if not self._bus.lost_reason(node_id):
-                    self._bus.nmt(node_id, "PRE-OPERATIONAL")
+                self._bus.nmt(node_id, "PRE-OPERATIONAL")
         except DriverError as exc:
             log.warning("%s: deactivate: %s", self.device_label, exc)
             if was_active:
@@ -175,7 +174,7 @@ class CanopenDevice:
     def events(self) -> list[DeviceEvent]:
         if not self._acquired:
             return []
-        self._bus.supervise()
+        self._bus.supervise()  # heartbeats, and a receive thread that died meanwhile
         return self._bus.events(self.owner)
 
     # ---- helpers for the subclasses ----

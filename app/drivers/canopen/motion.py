@@ -224,12 +224,13 @@ class CanopenMotion(CanopenDevice, MotionBackend):
             axis.commander = AxisCommander(homed=self._homed[name])
             axis.targets.clear()
         self._sync_and_wait("no TPDO1 answer to SYNC at activation")
-        for axis in self._axes.values():
+        for axis in self._axes.values():  # command = measured, power request DISABLED
             axis.target_counts = axis.actual_counts
             assert axis.sample is not None
             axis.commander.observe(axis.sample.statusword, axis.sample.mode_display)
             self._send_rpdo(axis, *axis.commander.command(), axis.target_counts)
-        self._sync_and_wait("no TPDO1 answer to SYNC at activation")
+        self._sync_and_wait("no TPDO1 answer to SYNC at activation")  # taken at this SYNC
+        self._sync_and_wait("no TPDO1 answer to SYNC at activation")  # and answered here
 
     def _sync_and_wait(self, what: str) -> None:
         seq = self._bus.sync(feedback=True)
@@ -241,11 +242,12 @@ class CanopenMotion(CanopenDevice, MotionBackend):
             raise CommunicationError(nodes[late[0]], f"{what} within {timeout_s * 1000:.0f} ms")
 
     def _stop_exchange(self) -> None:
-        reachable = [a for a in self._axes.values() if not self._bus.lost_reason(a.node.node_id)]
-        for axis in reachable:
+        # sent to every drive, lost or not: a CAN frame costs nothing if nobody hears it
+        for axis in self._axes.values():
             axis.commander.disable()
             controlword, mode = axis.commander.command()
             self._send_rpdo(axis, controlword, mode, axis.actual_counts)
+        reachable = [a for a in self._axes.values() if not self._bus.lost_reason(a.node.node_id)]
         # the TPDO answering a SYNC is sampled before that SYNC's controlword is taken, so
         # the drives' confirmation is in the answers to the following SYNC
         for _ in range(3):
@@ -263,17 +265,20 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         log.warning("%s: not every drive confirmed it is disabled", self.device_label)
 
     def _on_lost(self) -> None:
-        """Quick stop every drive that can still hear us (they decelerate and hold)."""
-        sent = False
+        """Quick stop every drive (they decelerate and hold); the lost one too, in case it
+        can still hear us. Nothing here enables or resets anything.
+
+        A lost drive also loses its homed flag: it may have been power-cycled while we could
+        not hear it (cable out, boot-up message missed), and an incremental encoder then
+        counts from wherever it woke up. Re-homing after a link loss is the safe price."""
+        for name, axis in self._axes.items():
+            if self._bus.receive_failed or self._bus.lost_reason(axis.node.node_id):
+                self._homed[name] = False
         for axis in self._axes.values():
-            if self._bus.lost_reason(axis.node.node_id):
-                continue
             axis.commander.quick_stop()
             controlword, mode = axis.commander.command()
             self._send_rpdo(axis, controlword, mode, axis.actual_counts)
-            sent = True
-        if sent:
-            self._bus.sync()
+        self._bus.sync()
 
     def _send_rpdo(self, axis: _Axis, controlword: int, mode: int, target_counts: int) -> None:
         self._bus.send(DRIVE_RPDO1.cob_id(axis.node.node_id),
@@ -287,10 +292,10 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         feedback: dict[str, AxisFeedback] = {}
         with self._bus.condition:
             for name, axis in self._axes.items():
-                if axis.bad_frame:
-                    raise self._lose(axis.label, axis.bad_frame)
-                if axis.sample is None:
-                    raise self._lose(axis.label, "no TPDO1 received")
+                problem = axis.bad_frame or ("" if axis.sample else "no TPDO1 received")
+                if problem:
+                    self._bus.report_lost(axis.node.node_id, problem)
+                    raise self._lose(axis.label, problem)
                 feedback[name] = self._feedback(name, axis)
         return feedback
 
