@@ -39,8 +39,7 @@ log = logging.getLogger(__name__)
 NOTIFIER_CYCLE_S = 0.05  # how long the receive thread blocks per wait: bounds shutdown time
 FrameCallback = Callable[[bytes, int], None]  # (data, SYNC number current at receipt)
 
-NMT_STATE_NAMES = {0x00: "boot-up", 0x04: "STOPPED", 0x05: "OPERATIONAL",
-                   0x7F: "PRE-OPERATIONAL"}
+NMT_STATE_NAMES = {0x00: "boot-up", 0x04: "STOPPED", 0x05: "OPERATIONAL", 0x7F: "PRE-OPERATIONAL"}
 
 
 def sdo_abort_text(code: int) -> str:
@@ -55,14 +54,16 @@ class _NodeEntry:
     last_emcy_code: int = 0
     beats: int = 0  # heartbeats received
     subscriptions: list[tuple[int, Callable[[int, bytearray, float], None]]] = field(
-        default_factory=list)
+        default_factory=list
+    )
 
 
 class CanopenBus:
     """The connected network, the SYNC counter, the heartbeat watchdog and event queues."""
 
-    def __init__(self, settings: CanopenSettings,
-                 clock: Callable[[], float] = time.monotonic) -> None:
+    def __init__(
+        self, settings: CanopenSettings, clock: Callable[[], float] = time.monotonic
+    ) -> None:
         self.settings = settings
         self.label = f"CAN {settings.interface}:{settings.channel}"
         self.condition = threading.Condition()
@@ -88,11 +89,15 @@ class CanopenBus:
             network = canopen.Network()
             network.NOTIFIER_CYCLE = NOTIFIER_CYCLE_S
             try:
-                network.connect(interface=self.settings.interface,
-                                channel=self.settings.channel, bitrate=self.settings.bitrate)
+                network.connect(
+                    interface=self.settings.interface,
+                    channel=self.settings.channel,
+                    bitrate=self.settings.bitrate,
+                )
             except (can.CanError, OSError, ValueError, ImportError) as exc:
-                raise CommunicationError(self.label, f"cannot open the CAN interface: {exc}"
-                                         ) from exc
+                raise CommunicationError(
+                    self.label, f"cannot open the CAN interface: {exc}"
+                ) from exc
             self._network = network
             self._thread_error = ""
             log.info("connected to %s", self.label)
@@ -121,8 +126,9 @@ class CanopenBus:
         return self._network
 
     # ---- nodes ----
-    def add_node(self, node_id: int, od: ObjectDictionary, owner: str,
-                 label: str) -> canopen.RemoteNode:
+    def add_node(
+        self, node_id: int, od: ObjectDictionary, owner: str, label: str
+    ) -> canopen.RemoteNode:
         network = self.network
         if node_id in network:
             del network[node_id]
@@ -185,7 +191,8 @@ class CanopenBus:
             entry.last_emcy_code = code
             text = f"{emcy_text(code)} (error register 0x{int(emcy.register):02X})"
             self._queues[entry.owner].append(
-                DeviceEvent(DeviceEventKind.EMERGENCY, entry.label, code, text))
+                DeviceEvent(DeviceEventKind.EMERGENCY, entry.label, code, text)
+            )
         log.warning("%s: EMCY 0x%04X %s", entry.label, code, text)
 
     def last_emcy_code(self, node_id: int) -> int:
@@ -224,8 +231,11 @@ class CanopenBus:
         except Exception as exc:  # Network.check re-raises whatever killed the thread
             self._thread_error = f"the CAN receive thread died: {type(exc).__name__}: {exc}"
             with self.condition:
-                self._shared.append(DeviceEvent(DeviceEventKind.RECEIVE_THREAD_DIED,
-                                                self.label, 0, self._thread_error))
+                self._shared.append(
+                    DeviceEvent(
+                        DeviceEventKind.RECEIVE_THREAD_DIED, self.label, 0, self._thread_error
+                    )
+                )
             log.error("%s: %s", self.label, self._thread_error)
             raise CommunicationError(self.label, self._thread_error) from exc
 
@@ -236,8 +246,7 @@ class CanopenBus:
             raise
         except Exception as exc:
             self.check()  # a dead receive thread explains it best
-            raise CommunicationError(self.label, f"sending 0x{cob_id:03X} failed: {exc}"
-                                     ) from exc
+            raise CommunicationError(self.label, f"sending 0x{cob_id:03X} failed: {exc}") from exc
 
     def sync(self, *, feedback: bool = False) -> int:
         """Send one SYNC; returns its number. ``feedback``: sent by a read (a tool that does
@@ -255,8 +264,7 @@ class CanopenBus:
             self.network[node_id].nmt.state = command
         except Exception as exc:
             self.check()
-            raise CommunicationError(self._label(node_id), f"NMT {command} failed: {exc}"
-                                     ) from exc
+            raise CommunicationError(self._label(node_id), f"NMT {command} failed: {exc}") from exc
 
     def _label(self, node_id: int) -> str:
         entry = self._nodes.get(node_id)
@@ -273,10 +281,10 @@ class CanopenBus:
             self.check()
             raise CommunicationError(
                 self._label(node_id),
-                f"no SDO answer reading 0x{index:04X}:{subindex:02X} {what}: {exc}") from exc
+                f"no SDO answer reading 0x{index:04X}:{subindex:02X} {what}: {exc}",
+            ) from exc
 
-    def sdo_download(self, node_id: int, index: int, subindex: int, data: bytes,
-                     what: str) -> None:
+    def sdo_download(self, node_id: int, index: int, subindex: int, data: bytes, what: str) -> None:
         node = self._nodes[node_id].node
         try:
             node.sdo.download(index, subindex, data)
@@ -286,14 +294,25 @@ class CanopenBus:
             self.check()
             raise CommunicationError(
                 self._label(node_id),
-                f"no SDO answer writing 0x{index:04X}:{subindex:02X} {what}: {exc}") from exc
+                f"no SDO answer writing 0x{index:04X}:{subindex:02X} {what}: {exc}",
+            ) from exc
 
-    def _abort(self, node_id: int, exc: canopen.SdoAbortedError, doing: str, index: int,
-               subindex: int, what: str) -> DriverError:
+    def _abort(
+        self,
+        node_id: int,
+        exc: canopen.SdoAbortedError,
+        doing: str,
+        index: int,
+        subindex: int,
+        what: str,
+    ) -> DriverError:
         code = int(exc.code)
-        return DriverError(self._label(node_id),
-                           f"SDO abort 0x{code:08X} ({sdo_abort_text(code)}) {doing} "
-                           f"0x{index:04X}:{subindex:02X} {what}", code)
+        return DriverError(
+            self._label(node_id),
+            f"SDO abort 0x{code:08X} ({sdo_abort_text(code)}) {doing} "
+            f"0x{index:04X}:{subindex:02X} {what}",
+            code,
+        )
 
     # ---- supervision (machine loop) ----
     def supervise(self) -> None:
@@ -310,8 +329,10 @@ class CanopenBus:
             return
         with self.condition:
             if change.lost:
-                text = (f"heartbeat lost: nothing heard for {1000 * change.silent_s:.0f} ms "
-                        f"(timeout {self.settings.heartbeat_timeout_ms} ms)")
+                text = (
+                    f"heartbeat lost: nothing heard for {1000 * change.silent_s:.0f} ms "
+                    f"(timeout {self.settings.heartbeat_timeout_ms} ms)"
+                )
                 self._lost[change.node_id] = text
                 kind = DeviceEventKind.COMMUNICATION_LOST
             else:
@@ -333,7 +354,8 @@ class CanopenBus:
             self._lost[node_id] = text
             if entry is not None:
                 self._queues[entry.owner].append(
-                    DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, entry.label, 0, text))
+                    DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, entry.label, 0, text)
+                )
         log.error("%s: %s", self._label(node_id), text)
 
     def events(self, owner: str) -> list[DeviceEvent]:
@@ -357,8 +379,7 @@ class CanopenBus:
         (a period passes between its write and its next read); tools and tests that run
         periods back to back call it to read the drives' answers to what they just wrote."""
         seq = self.sync_seq
-        return self.wait(lambda: all(answered(seq) for answered in self._answer_sources),
-                         timeout_s)
+        return self.wait(lambda: all(answered(seq) for answered in self._answer_sources), timeout_s)
 
     def probe_report(self) -> Mapping[str, object]:
         """What ``stave probe`` prints about the link (found in ``MachineBackend.extras``)."""

@@ -51,8 +51,10 @@ class BusLoad:
         return self.bits_per_period_max / (self.period_s * self.bitrate)
 
     def describe(self) -> str:
-        return (f"{100 * self.minimum:.1f}-{100 * self.maximum:.1f} % at "
-                f"{1000 * self.period_s:g} ms and {self.bitrate // 1000} kbit/s")
+        return (
+            f"{100 * self.minimum:.1f}-{100 * self.maximum:.1f} % at "
+            f"{1000 * self.period_s:g} ms and {self.bitrate // 1000} kbit/s"
+        )
 
 
 def bus_load(frames: list[CyclicFrame], period_s: float, bitrate: int) -> BusLoad:

@@ -118,7 +118,8 @@ class AxisCommander:
     def enable(self) -> None:
         if self.state in FAULT_STATES:
             raise CommandRefusedError(
-                "the drive is in FAULT: an operator's fault reset comes first")
+                "the drive is in FAULT: an operator's fault reset comes first"
+            )
         if self.reset is not ResetPhase.NONE:
             raise CommandRefusedError("a fault reset is in progress")
         self.request = PowerRequest.ENABLED
@@ -140,7 +141,8 @@ class AxisCommander:
     def start_homing(self) -> None:
         if self.state is not Cia402State.OPERATION_ENABLED:
             raise CommandRefusedError(
-                f"homing needs OPERATION ENABLED, the drive is {self.state.value}")
+                f"homing needs OPERATION ENABLED, the drive is {self.state.value}"
+            )
         if self.homing in (HomingPhase.SELECT_MODE, HomingPhase.START, HomingPhase.RUNNING):
             return
         self.homing = HomingPhase.SELECT_MODE
@@ -160,9 +162,14 @@ class AxisCommander:
         if state in FAULT_STATES:
             self.request = PowerRequest.DISABLED  # latched: only the machine enables again
             self._abort_homing()
-        elif self.homing is not HomingPhase.IDLE and self.homing is not HomingPhase.RETURN and (
+        elif (
+            self.homing is not HomingPhase.IDLE
+            and self.homing is not HomingPhase.RETURN
+            and (
                 state is not Cia402State.OPERATION_ENABLED
-                or self.request is not PowerRequest.ENABLED):
+                or self.request is not PowerRequest.ENABLED
+            )
+        ):
             self._abort_homing()
         if self.homing is HomingPhase.SELECT_MODE and mode_display == MODE_HOMING:
             self.homing = HomingPhase.START
@@ -179,8 +186,11 @@ class AxisCommander:
 
     def command(self) -> tuple[int, int]:
         """(controlword, mode of operation) for this period's RPDO."""
-        mode = MODE_HOMING if self.homing in (HomingPhase.SELECT_MODE, HomingPhase.START,
-                                              HomingPhase.RUNNING) else MODE_CSP
+        mode = (
+            MODE_HOMING
+            if self.homing in (HomingPhase.SELECT_MODE, HomingPhase.START, HomingPhase.RUNNING)
+            else MODE_CSP
+        )
         if self.reset is ResetPhase.ZERO:
             self.reset = ResetPhase.EDGE
             return CW_DISABLE_VOLTAGE, mode

@@ -109,9 +109,13 @@ class CanopenDevice:
             for node_id in self._nodes():
                 self._bus.nmt(node_id, "PRE-OPERATIONAL")
                 self._check_profile(node_id)
-                self._bus.sdo_download(node_id, PRODUCER_HEARTBEAT_TIME, 0,
-                                       self._settings.heartbeat_ms.to_bytes(2, "little"),
-                                       "producer heartbeat time")
+                self._bus.sdo_download(
+                    node_id,
+                    PRODUCER_HEARTBEAT_TIME,
+                    0,
+                    self._settings.heartbeat_ms.to_bytes(2, "little"),
+                    "producer heartbeat time",
+                )
                 self._configure_node(node_id)
             self._wait_nodes(lambda n: self._bus.beats(n) > beats[n], "no heartbeat")
         except DriverError:
@@ -125,15 +129,17 @@ class CanopenDevice:
 
     def activate(self) -> None:
         if self._state is not LifecycleState.INACTIVE:
-            raise LifecycleError(self.device_label,
-                                 f"cannot activate from {self._state.value}; configure first")
+            raise LifecycleError(
+                self.device_label, f"cannot activate from {self._state.value}; configure first"
+            )
         try:
             self._bus.watchdog.watch(self._nodes())
             for node_id in self._nodes():
                 self._bus.nmt(node_id, "OPERATIONAL")
             self._wait_nodes(
                 lambda n: self._bus.watchdog.nmt_state(n) == NMT_OPERATIONAL,
-                "did not report OPERATIONAL after NMT start")
+                "did not report OPERATIONAL after NMT start",
+            )
             self._read_seq = -1
             self._checked_seq = -1
             self._missed = {n: 0 for n in self._nodes()}
@@ -192,9 +198,11 @@ class CanopenDevice:
         data = self._bus.sdo_upload(node_id, DEVICE_TYPE, 0, "device type")
         device_type = int.from_bytes(data[:4], "little")
         if device_type & 0xFFFF != self.profile:
-            raise DriverError(self._nodes()[node_id],
-                              f"device type 0x{device_type:08X} is not a CiA {self.profile} "
-                              "device: check the node id")
+            raise DriverError(
+                self._nodes()[node_id],
+                f"device type 0x{device_type:08X} is not a CiA {self.profile} "
+                "device: check the node id",
+            )
 
     def _wait_nodes(self, ready: Callable[[int], bool], what: str) -> None:
         """Wait (bounded by startup_timeout_ms) until ``ready(node_id)`` for every node."""
@@ -204,15 +212,18 @@ class CanopenDevice:
             return
         with self._bus.condition:
             missing = [n for n in nodes if not ready(n)]
-        raise CommunicationError(nodes[missing[0]],
-                                 f"{what} within {self._settings.startup_timeout_ms} ms")
+        raise CommunicationError(
+            nodes[missing[0]], f"{what} within {self._settings.startup_timeout_ms} ms"
+        )
 
     def _ensure_active(self) -> None:
         if self._state is LifecycleState.ACTIVE:
             return
         if self._state is LifecycleState.ERROR and self._fault:
-            raise CommunicationError(self._fault_device or self.device_label,
-                                     f"stopped after: {self._fault}; reset to reconnect")
+            raise CommunicationError(
+                self._fault_device or self.device_label,
+                f"stopped after: {self._fault}; reset to reconnect",
+            )
         raise LifecycleError(self.device_label, f"not active ({self._state.value})")
 
     def _lose(self, device: str, reason: str) -> CommunicationError:
@@ -270,7 +281,9 @@ class CanopenDevice:
         for node_id in nodes:
             self._missed[node_id] = self._missed.get(node_id, 0) + 1 if node_id in late else 0
             if self._missed[node_id] >= self._settings.pdo_miss_limit:
-                reason = (f"no cyclic TPDO for {self._missed[node_id]} SYNCs in a row "
-                          f"(limit {self._settings.pdo_miss_limit})")
+                reason = (
+                    f"no cyclic TPDO for {self._missed[node_id]} SYNCs in a row "
+                    f"(limit {self._settings.pdo_miss_limit})"
+                )
                 self._bus.report_lost(node_id, reason)
                 raise self._lose(nodes[node_id], reason)

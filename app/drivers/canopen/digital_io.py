@@ -70,8 +70,10 @@ class CanopenIO(CanopenDevice, DigitalIO):
         try:
             self._raw_inputs = unpack_bits(data, self._io.input_bytes)
         except struct.error:
-            self._bad_frame = (f"TPDO1 has {len(data)} bytes, expected "
-                               f"{self._io.input_bytes}: the node's PDO mapping differs")
+            self._bad_frame = (
+                f"TPDO1 has {len(data)} bytes, expected "
+                f"{self._io.input_bytes}: the node's PDO mapping differs"
+            )
             return
         self._input_seq = seq
 
@@ -85,8 +87,9 @@ class CanopenIO(CanopenDevice, DigitalIO):
         download_layout(write, self._tpdo, node_id)
         download_layout(write, self._rpdo, node_id)
         for sub in range(1, self._io.output_bytes + 1):
-            self._bus.sdo_download(node_id, obj.WRITE_OUTPUT_8BIT, sub, b"\x00",
-                                   "write output 8-bit (all off)")
+            self._bus.sdo_download(
+                node_id, obj.WRITE_OUTPUT_8BIT, sub, b"\x00", "write output 8-bit (all off)"
+            )
 
     def _latest_seq(self, node_id: int) -> int:
         return self._input_seq
@@ -95,8 +98,10 @@ class CanopenIO(CanopenDevice, DigitalIO):
         seq = self._bus.sync(feedback=True)
         timeout_s = self._settings.startup_timeout_ms / 1000.0
         if not self._bus.wait(lambda: self._input_seq >= seq, timeout_s):
-            raise CommunicationError(self._label, "no TPDO1 answer to SYNC at activation "
-                                     f"within {timeout_s * 1000:.0f} ms")
+            raise CommunicationError(
+                self._label,
+                f"no TPDO1 answer to SYNC at activation within {timeout_s * 1000:.0f} ms",
+            )
         self._send_outputs(0)
 
     def _stop_exchange(self) -> None:
@@ -104,8 +109,7 @@ class CanopenIO(CanopenDevice, DigitalIO):
             self._send_outputs(0)
 
     def _send_outputs(self, value: int) -> None:
-        self._bus.send(self._rpdo.cob_id(self._io.node_id),
-                       pack_bits(value, self._io.output_bytes))
+        self._bus.send(self._rpdo.cob_id(self._io.node_id), pack_bits(value, self._io.output_bytes))
         self._sent_outputs = value
         self._periods_since_send = 0
 
@@ -117,8 +121,10 @@ class CanopenIO(CanopenDevice, DigitalIO):
             if self._bad_frame:
                 raise self._lose(self._label, self._bad_frame)
             raw = self._raw_inputs
-        values = {name: bool(raw >> bit & 1) != (name in self._io.inverted_inputs)
-                  for name, bit in self._io.inputs.items()}
+        values = {
+            name: bool(raw >> bit & 1) != (name in self._io.inverted_inputs)
+            for name, bit in self._io.inputs.items()
+        }
         return InputImage(**values)
 
     def write_outputs(self, outputs: OutputImage) -> None:

@@ -80,16 +80,17 @@ class _Axis:
         self.bad_frame = ""
         self.target_counts = 0  # last target sent
         self.targets: dict[int, int] = {}  # SYNC number -> target taken at that SYNC
-        self.max_step = config.max_velocity * period_s * JUMP_PERIODS \
-            + config.following_error_limit
+        self.max_step = config.max_velocity * period_s * JUMP_PERIODS + config.following_error_limit
 
     # receive thread, under the bus condition
     def on_tpdo1(self, data: bytes, seq: int) -> None:
         try:
             statusword, position, mode = unpack_drive_feedback(data)
         except struct.error:
-            self.bad_frame = (f"TPDO1 has {len(data)} bytes, expected "
-                              f"{DRIVE_TPDO1.data_bytes}: the drive's PDO mapping differs")
+            self.bad_frame = (
+                f"TPDO1 has {len(data)} bytes, expected "
+                f"{DRIVE_TPDO1.data_bytes}: the drive's PDO mapping differs"
+            )
             return
         if self.sample is not None and self.sample.seq != seq:
             self.previous = self.sample
@@ -109,8 +110,11 @@ class _Axis:
     def follows_setpoints(self) -> bool:
         """The drive takes our targets: enabled, in CSP, not homing."""
         c = self.commander
-        return c.state is Cia402State.OPERATION_ENABLED and c.homing is HomingPhase.IDLE \
+        return (
+            c.state is Cia402State.OPERATION_ENABLED
+            and c.homing is HomingPhase.IDLE
             and c.mode_display == obj.MODE_CSP
+        )
 
 
 class CanopenMotion(CanopenDevice, MotionBackend):
@@ -119,8 +123,10 @@ class CanopenMotion(CanopenDevice, MotionBackend):
 
     def __init__(self, bus: CanopenBus, settings: CanopenSettings, config: MachineConfig) -> None:
         super().__init__(bus, settings)
-        self._axes = {name: _Axis(settings.axes[name], axis, settings.period_s)
-                      for name, axis in config.axes.items()}
+        self._axes = {
+            name: _Axis(settings.axes[name], axis, settings.period_s)
+            for name, axis in config.axes.items()
+        }
         self._by_node = {a.node.node_id: a for a in self._axes.values()}
         self._homed = {name: False for name in self._axes}
 
@@ -163,48 +169,80 @@ class CanopenMotion(CanopenDevice, MotionBackend):
 
         modes = self._supported_modes(node_id)
         if modes is not None and not modes & obj.SUPPORTED_CSP_BIT:
-            raise DriverError(axis.label, f"does not support cyclic synchronous position mode "
-                              f"(0x6502 supported drive modes = 0x{modes:08X})")
+            raise DriverError(
+                axis.label,
+                f"does not support cyclic synchronous position mode "
+                f"(0x6502 supported drive modes = 0x{modes:08X})",
+            )
         if modes is not None and not cfg.absolute_encoder and not modes & obj.SUPPORTED_HOMING_BIT:
-            raise DriverError(axis.label, "does not support homing mode, and the axis has an "
-                              "incremental encoder")
+            raise DriverError(
+                axis.label, "does not support homing mode, and the axis has an incremental encoder"
+            )
         for number in range(2, 5):
-            disable_pdo(lambda i, s, d: write(i, s, d, "RPDO communication"), True, number,
-                        node_id)
+            disable_pdo(lambda i, s, d: write(i, s, d, "RPDO communication"), True, number, node_id)
         for number in range(3, 5):
-            disable_pdo(lambda i, s, d: write(i, s, d, "TPDO communication"), False, number,
-                        node_id)
+            disable_pdo(
+                lambda i, s, d: write(i, s, d, "TPDO communication"), False, number, node_id
+            )
         download_layout(lambda i, s, d: write(i, s, d, "RPDO1 mapping"), DRIVE_RPDO1, node_id)
         download_layout(lambda i, s, d: write(i, s, d, "TPDO1 mapping"), DRIVE_TPDO1, node_id)
-        download_layout(lambda i, s, d: write(i, s, d, "TPDO2 mapping"),
-                        drive_tpdo2(self._settings.slow_feedback_every_n_sync), node_id)
+        download_layout(
+            lambda i, s, d: write(i, s, d, "TPDO2 mapping"),
+            drive_tpdo2(self._settings.slow_feedback_every_n_sync),
+            node_id,
+        )
         period_us = round(self._settings.period_s * 1e6)
-        write(obj.COMM_CYCLE_PERIOD, 0, struct.pack("<I", period_us),
-              "communication cycle period", optional=True)
+        write(
+            obj.COMM_CYCLE_PERIOD,
+            0,
+            struct.pack("<I", period_us),
+            "communication cycle period",
+            optional=True,
+        )
         value, index = _interpolation_period(self._settings.period_s)
-        write(obj.INTERPOLATION_TIME_PERIOD, 1, struct.pack("<B", value),
-              "interpolation time period value", optional=True)
-        write(obj.INTERPOLATION_TIME_PERIOD, 2, struct.pack("<b", index),
-              "interpolation time index", optional=True)
-        write(obj.FOLLOWING_ERROR_WINDOW, 0,
-              struct.pack("<I", min(2**32 - 1, round(cfg.following_error_limit * counts))),
-              "following error window")
+        write(
+            obj.INTERPOLATION_TIME_PERIOD,
+            1,
+            struct.pack("<B", value),
+            "interpolation time period value",
+            optional=True,
+        )
+        write(
+            obj.INTERPOLATION_TIME_PERIOD,
+            2,
+            struct.pack("<b", index),
+            "interpolation time index",
+            optional=True,
+        )
+        write(
+            obj.FOLLOWING_ERROR_WINDOW,
+            0,
+            struct.pack("<I", min(2**32 - 1, round(cfg.following_error_limit * counts))),
+            "following error window",
+        )
         write(obj.HOMING_METHOD, 0, struct.pack("<b", axis.node.homing_method), "homing method")
         speed = max(1, round(cfg.homing_velocity * counts))
         write(obj.HOMING_SPEEDS, 1, struct.pack("<I", speed), "homing speed (switch)")
-        write(obj.HOMING_SPEEDS, 2, struct.pack("<I", max(1, speed // 10)),
-              "homing speed (zero)")
-        write(obj.HOMING_ACCELERATION, 0,
-              struct.pack("<I", max(1, round(cfg.jog_acceleration * counts))),
-              "homing acceleration")
-        write(obj.HOME_OFFSET, 0, struct.pack("<i", axis.node.to_counts(cfg.home_switch_position)),
-              "home offset")
+        write(obj.HOMING_SPEEDS, 2, struct.pack("<I", max(1, speed // 10)), "homing speed (zero)")
+        write(
+            obj.HOMING_ACCELERATION,
+            0,
+            struct.pack("<I", max(1, round(cfg.jog_acceleration * counts))),
+            "homing acceleration",
+        )
+        write(
+            obj.HOME_OFFSET,
+            0,
+            struct.pack("<i", axis.node.to_counts(cfg.home_switch_position)),
+            "home offset",
+        )
         write(obj.MODES_OF_OPERATION, 0, struct.pack("<b", obj.MODE_CSP), "modes of operation")
 
     def _supported_modes(self, node_id: int) -> int | None:
         try:
-            data = self._bus.sdo_upload(node_id, obj.SUPPORTED_DRIVE_MODES, 0,
-                                        "supported drive modes")
+            data = self._bus.sdo_upload(
+                node_id, obj.SUPPORTED_DRIVE_MODES, 0, "supported drive modes"
+            )
         except CommunicationError:
             raise
         except DriverError as exc:
@@ -236,8 +274,7 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         seq = self._bus.sync(feedback=True)
         timeout_s = self._settings.startup_timeout_ms / 1000.0
         nodes = self._nodes()
-        if not self._bus.wait(lambda: all(self._latest_seq(n) >= seq for n in nodes),
-                              timeout_s):
+        if not self._bus.wait(lambda: all(self._latest_seq(n) >= seq for n in nodes), timeout_s):
             late = [n for n in nodes if self._latest_seq(n) < seq]
             raise CommunicationError(nodes[late[0]], f"{what} within {timeout_s * 1000:.0f} ms")
 
@@ -259,8 +296,10 @@ class CanopenMotion(CanopenDevice, MotionBackend):
             self._bus.wait(answered, max(0.05, 10 * self._settings.period_s))
             with self._bus.condition:
                 if answered() and all(
-                        a.sample is not None and decode_statusword(a.sample.statusword)
-                        is not Cia402State.OPERATION_ENABLED for a in reachable):
+                    a.sample is not None
+                    and decode_statusword(a.sample.statusword) is not Cia402State.OPERATION_ENABLED
+                    for a in reachable
+                ):
                     return
         log.warning("%s: not every drive confirmed it is disabled", self.device_label)
 
@@ -281,8 +320,10 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         self._bus.sync()
 
     def _send_rpdo(self, axis: _Axis, controlword: int, mode: int, target_counts: int) -> None:
-        self._bus.send(DRIVE_RPDO1.cob_id(axis.node.node_id),
-                       pack_drive_command(controlword, target_counts, mode))
+        self._bus.send(
+            DRIVE_RPDO1.cob_id(axis.node.node_id),
+            pack_drive_command(controlword, target_counts, mode),
+        )
 
     # ---- the period ----
     def read_axes(self) -> Mapping[str, AxisFeedback]:
@@ -378,7 +419,8 @@ class CanopenMotion(CanopenDevice, MotionBackend):
                 axis.label,
                 f"setpoint {position:.4f} {axis.config.unit} jumps {abs(position - last):.4f} "
                 f"from the last target {last:.4f}; at most {axis.max_step:.4f} per period "
-                "is allowed (nothing was sent)")
+                "is allowed (nothing was sent)",
+            )
         counts = axis.node.to_counts(position)
         if not -(2**31) <= counts < 2**31:
             raise DriverError(axis.label, f"setpoint {position} is beyond the 32-bit range")
@@ -389,8 +431,9 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         try:
             return self._axes[name]
         except KeyError:
-            raise DriverError(self.device_label,
-                              f"unknown axis {name!r}: one of {', '.join(self._axes)}") from None
+            raise DriverError(
+                self.device_label, f"unknown axis {name!r}: one of {', '.join(self._axes)}"
+            ) from None
 
     def _request(self, name: str, what: str) -> None:
         axis = self._axis(name)

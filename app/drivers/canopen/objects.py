@@ -90,18 +90,40 @@ def _var(
     return var
 
 
-def _record(od: ObjectDictionary, name: str, index: int, members: list[ODVariable],
-            sub0: ODVariable | None = None) -> None:
+def _record(
+    od: ObjectDictionary,
+    name: str,
+    index: int,
+    members: list[ODVariable],
+    sub0: ODVariable | None = None,
+) -> None:
     record = ODRecord(name, index)
-    record.add_member(sub0 or _var("Highest sub-index supported", index, 0, UNSIGNED8, "const",
-                                   max(m.subindex for m in members)))
+    record.add_member(
+        sub0
+        or _var(
+            "Highest sub-index supported",
+            index,
+            0,
+            UNSIGNED8,
+            "const",
+            max(m.subindex for m in members),
+        )
+    )
     for member in members:
         record.add_member(member)
     od.add_object(record)
 
 
-def _array(od: ObjectDictionary, name: str, index: int, count: int, data_type: int,
-           access: str, *, mappable: bool = False) -> None:
+def _array(
+    od: ObjectDictionary,
+    name: str,
+    index: int,
+    count: int,
+    data_type: int,
+    access: str,
+    *,
+    mappable: bool = False,
+) -> None:
     array = ODArray(name, index)
     array.add_member(_var("Highest sub-index supported", index, 0, UNSIGNED8, "const", count))
     for sub in range(1, count + 1):
@@ -122,24 +144,46 @@ def _communication_objects(od: ObjectDictionary, node_id: int, device_type: int)
     for n in range(PDO_SLOTS):
         rx_cob = (0x200 + 0x100 * n + node_id) | (1 << 31)  # pre-defined, not valid
         tx_cob = (0x180 + 0x100 * n + node_id) | (1 << 31)
-        _record(od, f"RPDO {n + 1} communication parameter", RPDO_COMM + n, [
-            _var("COB-ID used by RPDO", RPDO_COMM + n, 1, UNSIGNED32, "rw", rx_cob),
-            _var("Transmission type", RPDO_COMM + n, 2, UNSIGNED8, "rw", 255),
-        ])
-        _record(od, f"RPDO {n + 1} mapping parameter", RPDO_MAPPING + n,
-                [_var(f"Mapped object {s}", RPDO_MAPPING + n, s, UNSIGNED32, "rw")
-                 for s in range(1, 9)],
-                _var("Number of mapped objects", RPDO_MAPPING + n, 0, UNSIGNED8, "rw"))
-        _record(od, f"TPDO {n + 1} communication parameter", TPDO_COMM + n, [
-            _var("COB-ID used by TPDO", TPDO_COMM + n, 1, UNSIGNED32, "rw", tx_cob),
-            _var("Transmission type", TPDO_COMM + n, 2, UNSIGNED8, "rw", 255),
-            _var("Inhibit time", TPDO_COMM + n, 3, UNSIGNED16, "rw"),
-            _var("Event timer", TPDO_COMM + n, 5, UNSIGNED16, "rw"),
-        ])
-        _record(od, f"TPDO {n + 1} mapping parameter", TPDO_MAPPING + n,
-                [_var(f"Mapped object {s}", TPDO_MAPPING + n, s, UNSIGNED32, "rw")
-                 for s in range(1, 9)],
-                _var("Number of mapped objects", TPDO_MAPPING + n, 0, UNSIGNED8, "rw"))
+        _record(
+            od,
+            f"RPDO {n + 1} communication parameter",
+            RPDO_COMM + n,
+            [
+                _var("COB-ID used by RPDO", RPDO_COMM + n, 1, UNSIGNED32, "rw", rx_cob),
+                _var("Transmission type", RPDO_COMM + n, 2, UNSIGNED8, "rw", 255),
+            ],
+        )
+        _record(
+            od,
+            f"RPDO {n + 1} mapping parameter",
+            RPDO_MAPPING + n,
+            [
+                _var(f"Mapped object {s}", RPDO_MAPPING + n, s, UNSIGNED32, "rw")
+                for s in range(1, 9)
+            ],
+            _var("Number of mapped objects", RPDO_MAPPING + n, 0, UNSIGNED8, "rw"),
+        )
+        _record(
+            od,
+            f"TPDO {n + 1} communication parameter",
+            TPDO_COMM + n,
+            [
+                _var("COB-ID used by TPDO", TPDO_COMM + n, 1, UNSIGNED32, "rw", tx_cob),
+                _var("Transmission type", TPDO_COMM + n, 2, UNSIGNED8, "rw", 255),
+                _var("Inhibit time", TPDO_COMM + n, 3, UNSIGNED16, "rw"),
+                _var("Event timer", TPDO_COMM + n, 5, UNSIGNED16, "rw"),
+            ],
+        )
+        _record(
+            od,
+            f"TPDO {n + 1} mapping parameter",
+            TPDO_MAPPING + n,
+            [
+                _var(f"Mapped object {s}", TPDO_MAPPING + n, s, UNSIGNED32, "rw")
+                for s in range(1, 9)
+            ],
+            _var("Number of mapped objects", TPDO_MAPPING + n, 0, UNSIGNED8, "rw"),
+        )
 
 
 def build_drive_od(node_id: int) -> ObjectDictionary:
@@ -151,23 +195,39 @@ def build_drive_od(node_id: int) -> ObjectDictionary:
     _add(od, _var("Controlword", CONTROLWORD, 0, UNSIGNED16, "rw", mappable=True))
     _add(od, _var("Statusword", STATUSWORD, 0, UNSIGNED16, "ro", mappable=True))
     _add(od, _var("Modes of operation", MODES_OF_OPERATION, 0, INTEGER8, "rw", mappable=True))
-    _add(od, _var("Modes of operation display", MODES_DISPLAY, 0, INTEGER8, "ro",
-                  mappable=True))
+    _add(od, _var("Modes of operation display", MODES_DISPLAY, 0, INTEGER8, "ro", mappable=True))
     _add(od, _var("Position actual value", POSITION_ACTUAL, 0, INTEGER32, "ro", mappable=True))
-    _add(od, _var("Following error window", FOLLOWING_ERROR_WINDOW, 0, UNSIGNED32, "rw",
-                  0xFFFFFFFF))
+    _add(
+        od, _var("Following error window", FOLLOWING_ERROR_WINDOW, 0, UNSIGNED32, "rw", 0xFFFFFFFF)
+    )
     _add(od, _var("Target position", TARGET_POSITION, 0, INTEGER32, "rw", mappable=True))
     _add(od, _var("Home offset", HOME_OFFSET, 0, INTEGER32, "rw"))
     _add(od, _var("Homing method", HOMING_METHOD, 0, INTEGER8, "rw"))
     _array(od, "Homing speeds", HOMING_SPEEDS, 2, UNSIGNED32, "rw")
     _add(od, _var("Homing acceleration", HOMING_ACCELERATION, 0, UNSIGNED32, "rw"))
-    _record(od, "Interpolation time period", INTERPOLATION_TIME_PERIOD, [
-        _var("Interpolation time period value", INTERPOLATION_TIME_PERIOD, 1, UNSIGNED8, "rw", 1),
-        _var("Interpolation time index", INTERPOLATION_TIME_PERIOD, 2, INTEGER8, "rw", -3),
-    ])
+    _record(
+        od,
+        "Interpolation time period",
+        INTERPOLATION_TIME_PERIOD,
+        [
+            _var(
+                "Interpolation time period value", INTERPOLATION_TIME_PERIOD, 1, UNSIGNED8, "rw", 1
+            ),
+            _var("Interpolation time index", INTERPOLATION_TIME_PERIOD, 2, INTEGER8, "rw", -3),
+        ],
+    )
     _add(od, _var("Digital inputs", DIGITAL_INPUTS, 0, UNSIGNED32, "ro", mappable=True))
-    _add(od, _var("Supported drive modes", SUPPORTED_DRIVE_MODES, 0, UNSIGNED32, "ro",
-                  SUPPORTED_CSP_BIT | SUPPORTED_HOMING_BIT))
+    _add(
+        od,
+        _var(
+            "Supported drive modes",
+            SUPPORTED_DRIVE_MODES,
+            0,
+            UNSIGNED32,
+            "ro",
+            SUPPORTED_CSP_BIT | SUPPORTED_HOMING_BIT,
+        ),
+    )
     return od
 
 
@@ -177,7 +237,5 @@ def build_io_od(node_id: int) -> ObjectDictionary:
     od.node_id = node_id
     _communication_objects(od, node_id, 0x00030000 | PROFILE_IO)  # digital in + out, 401
     _array(od, "Read input 8-bit", READ_INPUT_8BIT, IO_BYTES, UNSIGNED8, "ro", mappable=True)
-    _array(od, "Write output 8-bit", WRITE_OUTPUT_8BIT, IO_BYTES, UNSIGNED8, "rw",
-           mappable=True)
+    _array(od, "Write output 8-bit", WRITE_OUTPUT_8BIT, IO_BYTES, UNSIGNED8, "rw", mappable=True)
     return od
-

@@ -75,33 +75,56 @@ class PdoLayout:
         return sum(e.bits for e in self.entries) // 8
 
 
-DRIVE_RPDO1 = PdoLayout(True, 1, TRANSMISSION_SYNC, (
-    PdoEntry(obj.CONTROLWORD, 0, 16),
-    PdoEntry(obj.TARGET_POSITION, 0, 32),
-    PdoEntry(obj.MODES_OF_OPERATION, 0, 8),
-))
-DRIVE_TPDO1 = PdoLayout(False, 1, TRANSMISSION_SYNC, (
-    PdoEntry(obj.STATUSWORD, 0, 16),
-    PdoEntry(obj.POSITION_ACTUAL, 0, 32),
-    PdoEntry(obj.MODES_DISPLAY, 0, 8),
-))
+DRIVE_RPDO1 = PdoLayout(
+    True,
+    1,
+    TRANSMISSION_SYNC,
+    (
+        PdoEntry(obj.CONTROLWORD, 0, 16),
+        PdoEntry(obj.TARGET_POSITION, 0, 32),
+        PdoEntry(obj.MODES_OF_OPERATION, 0, 8),
+    ),
+)
+DRIVE_TPDO1 = PdoLayout(
+    False,
+    1,
+    TRANSMISSION_SYNC,
+    (
+        PdoEntry(obj.STATUSWORD, 0, 16),
+        PdoEntry(obj.POSITION_ACTUAL, 0, 32),
+        PdoEntry(obj.MODES_DISPLAY, 0, 8),
+    ),
+)
 
 
 def drive_tpdo2(every_n_sync: int) -> PdoLayout:
-    return PdoLayout(False, 2, every_n_sync, (
-        PdoEntry(obj.DIGITAL_INPUTS, 0, 32),
-        PdoEntry(obj.ERROR_CODE, 0, 16),
-    ))
+    return PdoLayout(
+        False,
+        2,
+        every_n_sync,
+        (
+            PdoEntry(obj.DIGITAL_INPUTS, 0, 32),
+            PdoEntry(obj.ERROR_CODE, 0, 16),
+        ),
+    )
 
 
 def io_tpdo1(input_bytes: int) -> PdoLayout:
-    return PdoLayout(False, 1, TRANSMISSION_SYNC, tuple(
-        PdoEntry(obj.READ_INPUT_8BIT, sub, 8) for sub in range(1, input_bytes + 1)))
+    return PdoLayout(
+        False,
+        1,
+        TRANSMISSION_SYNC,
+        tuple(PdoEntry(obj.READ_INPUT_8BIT, sub, 8) for sub in range(1, input_bytes + 1)),
+    )
 
 
 def io_rpdo1(output_bytes: int) -> PdoLayout:
-    return PdoLayout(True, 1, TRANSMISSION_EVENT, tuple(
-        PdoEntry(obj.WRITE_OUTPUT_8BIT, sub, 8) for sub in range(1, output_bytes + 1)))
+    return PdoLayout(
+        True,
+        1,
+        TRANSMISSION_EVENT,
+        tuple(PdoEntry(obj.WRITE_OUTPUT_8BIT, sub, 8) for sub in range(1, output_bytes + 1)),
+    )
 
 
 _DRIVE_COMMAND = struct.Struct("<Hib")  # controlword, target position, mode
@@ -158,15 +181,24 @@ def disable_pdo(download: SdoDownload, receive: bool, number: int, node_id: int)
     download(layout.comm_index, 1, struct.pack("<I", layout.cob_id(node_id) | PDO_NOT_VALID))
 
 
-def cyclic_frames(drives: int, slow_every_n_sync: int, io_input_bytes: int,
-                  heartbeat_nodes: int, heartbeat_ms: int, period_s: float) -> list[CyclicFrame]:
+def cyclic_frames(
+    drives: int,
+    slow_every_n_sync: int,
+    io_input_bytes: int,
+    heartbeat_nodes: int,
+    heartbeat_ms: int,
+    period_s: float,
+) -> list[CyclicFrame]:
     """Every frame of the cyclic traffic, per SYNC period (the bus load's input)."""
     heartbeat_per_period = period_s * 1000.0 / heartbeat_ms
     frames = [CyclicFrame("SYNC", 0, 1.0)]
-    frames += [CyclicFrame("RPDO1 drive", DRIVE_RPDO1.data_bytes, float(drives)),
-               CyclicFrame("TPDO1 drive", DRIVE_TPDO1.data_bytes, float(drives)),
-               CyclicFrame("TPDO2 drive", drive_tpdo2(slow_every_n_sync).data_bytes,
-                           drives / slow_every_n_sync)]
+    frames += [
+        CyclicFrame("RPDO1 drive", DRIVE_RPDO1.data_bytes, float(drives)),
+        CyclicFrame("TPDO1 drive", DRIVE_TPDO1.data_bytes, float(drives)),
+        CyclicFrame(
+            "TPDO2 drive", drive_tpdo2(slow_every_n_sync).data_bytes, drives / slow_every_n_sync
+        ),
+    ]
     if io_input_bytes:
         frames.append(CyclicFrame("TPDO1 I/O", io_input_bytes, 1.0))
     frames.append(CyclicFrame("heartbeat", 1, heartbeat_nodes * heartbeat_per_period))

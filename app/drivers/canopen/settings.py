@@ -21,19 +21,38 @@ from app.drivers.canopen.pdo import cyclic_frames
 from app.drivers.contracts import InputImage, OutputImage
 
 ROOT = "backend.canopen"
-BITRATES: tuple[int, ...] = (10_000, 20_000, 50_000, 125_000, 250_000, 500_000, 800_000,
-                             1_000_000)
+BITRATES: tuple[int, ...] = (10_000, 20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)
 # python-can interfaces (can.interfaces.VALID_INTERFACES of python-can 4.6) minus
 # udp_multicast, which is no CAN bus and sends to a non-loopback multicast address.
 INTERFACES: tuple[str, ...] = (
-    "canalystii", "cantact", "etas", "gs_usb", "iscan", "ixxat", "kvaser", "neousys",
-    "neovi", "nican", "nixnet", "pcan", "robotell", "seeedstudio", "serial", "slcan",
-    "socketcan", "socketcand", "systec", "usb2can", "vector", "virtual",
+    "canalystii",
+    "cantact",
+    "etas",
+    "gs_usb",
+    "iscan",
+    "ixxat",
+    "kvaser",
+    "neousys",
+    "neovi",
+    "nican",
+    "nixnet",
+    "pcan",
+    "robotell",
+    "seeedstudio",
+    "serial",
+    "slcan",
+    "socketcan",
+    "socketcand",
+    "systec",
+    "usb2can",
+    "vector",
+    "virtual",
 )
 # CiA 402 homing methods: 1-14 with index pulse, 17-30 without, 33/34 index only,
 # 35 and 37 current position; negative values are manufacturer specific.
 HOMING_METHODS: frozenset[int] = frozenset(
-    [*range(1, 15), *range(17, 31), 33, 34, 35, 37, *range(-128, 0)])
+    [*range(1, 15), *range(17, 31), 33, 34, 35, 37, *range(-128, 0)]
+)
 INPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(InputImage))
 OUTPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(OutputImage))
 IO_BITS = 16  # a CiA 401 node with up to two bytes of inputs and two of outputs
@@ -96,9 +115,14 @@ class CanopenSettings:
         return [a.node_id for a in self.axes.values()] + [self.io.node_id]
 
     def bus_load(self) -> BusLoad:
-        frames = cyclic_frames(len(self.axes), self.slow_feedback_every_n_sync,
-                               self.io.input_bytes, len(self.node_ids), self.heartbeat_ms,
-                               self.period_s)
+        frames = cyclic_frames(
+            len(self.axes),
+            self.slow_feedback_every_n_sync,
+            self.io.input_bytes,
+            len(self.node_ids),
+            self.heartbeat_ms,
+            self.period_s,
+        )
         return bus_load(frames, self.period_s, self.bitrate)
 
 
@@ -138,8 +162,12 @@ class _Table:
     def number(self, name: str, default: object, what: str = "") -> float:
         allowed = f"a number > 0{what}"
         value = self.value(name, default, allowed)
-        if (isinstance(value, bool) or not isinstance(value, int | float)
-                or not math.isfinite(value) or value <= 0):
+        if (
+            isinstance(value, bool)
+            or not isinstance(value, int | float)
+            or not math.isfinite(value)
+            or value <= 0
+        ):
             raise self.error(name, value, allowed)
         return float(value)
 
@@ -168,29 +196,40 @@ class _Table:
 
 def _read_axis(table: _Table, axis: AxisConfig) -> AxisNodeSettings:
     node_id = table.integer("node_id", _MISSING, 1, 127, " (the drive's CANopen node id)")
-    counts = table.number("counts_per_unit", _MISSING,
-                          f" (encoder increments per {axis.unit} of axis {axis.name})")
+    counts = table.number(
+        "counts_per_unit", _MISSING, f" (encoder increments per {axis.unit} of axis {axis.name})"
+    )
     invert = table.boolean("invert", False)
     default_method = 21 if axis.homing_direction < 0 else 19  # home switch, no index pulse
-    method = table.integer("homing_method", default_method, -128, 37,
-                           ", a CiA 402 homing method (1-14, 17-30, 33-35, 37 or < 0)")
+    method = table.integer(
+        "homing_method",
+        default_method,
+        -128,
+        37,
+        ", a CiA 402 homing method (1-14, 17-30, 33-35, 37 or < 0)",
+    )
     if method not in HOMING_METHODS:
-        raise table.error("homing_method", method,
-                          "a CiA 402 homing method (1-14, 17-30, 33-35, 37 or < 0)")
+        raise table.error(
+            "homing_method", method, "a CiA 402 homing method (1-14, 17-30, 33-35, 37 or < 0)"
+        )
     table.finish()
     reach = max(abs(axis.min_position), abs(axis.max_position)) + axis.limit_switch_margin
     if reach * counts >= 2**31:
-        raise table.error("counts_per_unit", counts,
-                          f"at most {(2**31 - 1) / reach:.6g}: position {reach:g} {axis.unit} "
-                          "must fit in the drive's 32-bit position")
+        raise table.error(
+            "counts_per_unit",
+            counts,
+            f"at most {(2**31 - 1) / reach:.6g}: position {reach:g} {axis.unit} "
+            "must fit in the drive's 32-bit position",
+        )
     return AxisNodeSettings(axis.name, node_id, counts, invert, method)
 
 
 def _read_bits(table: _Table, functions: tuple[str, ...], kind: str) -> dict[str, int]:
     bits: dict[str, int] = {}
     for name in functions:
-        bit = table.integer(name, _MISSING, 0, IO_BITS - 1,
-                            f" (the {kind} bit of this function on the I/O node)")
+        bit = table.integer(
+            name, _MISSING, 0, IO_BITS - 1, f" (the {kind} bit of this function on the I/O node)"
+        )
         clash = [other for other, used in bits.items() if used == bit]
         if clash:
             raise table.error(name, bit, f"a bit no other {kind} uses ({clash[0]} has {bit})")
@@ -205,8 +244,9 @@ def _read_io(table: _Table) -> IoNodeSettings:
     outputs = _read_bits(table.table("outputs", required=True), OUTPUT_FUNCTIONS, "output")
     inverted = table.value("inverted_inputs", [], "a list of input functions")
     if not isinstance(inverted, list) or any(n not in INPUT_FUNCTIONS for n in inverted):
-        raise table.error("inverted_inputs", inverted,
-                          "a list of input functions: " + ", ".join(INPUT_FUNCTIONS))
+        raise table.error(
+            "inverted_inputs", inverted, "a list of input functions: " + ", ".join(INPUT_FUNCTIONS)
+        )
     table.finish()
     return IoNodeSettings(node_id, inputs, outputs, frozenset(inverted))
 
@@ -217,42 +257,66 @@ def parse_settings(raw: Mapping[str, Any], config: MachineConfig) -> CanopenSett
     interface = root.choice("interface", "socketcan", INTERFACES)
     channel = root.value("channel", "can0", "a channel name or number")
     if isinstance(channel, bool) or not isinstance(channel, str | int) or channel == "":
-        raise root.error("channel", channel, "a channel name (\"can0\") or number")
+        raise root.error("channel", channel, 'a channel name ("can0") or number')
     bitrate = root.choice("bitrate", 1_000_000, BITRATES)
     heartbeat_ms = root.integer("heartbeat_ms", 100, 10, 10_000)
     timeout_ms = root.integer("heartbeat_timeout_ms", round(2.5 * heartbeat_ms), 15, 60_000)
     if timeout_ms < 1.5 * heartbeat_ms:
-        raise root.error("heartbeat_timeout_ms", timeout_ms,
-                         f"at least 1.5 x heartbeat_ms ({1.5 * heartbeat_ms:g})")
+        raise root.error(
+            "heartbeat_timeout_ms",
+            timeout_ms,
+            f"at least 1.5 x heartbeat_ms ({1.5 * heartbeat_ms:g})",
+        )
     sdo_timeout_ms = root.integer("sdo_timeout_ms", 300, 10, 10_000)
     startup_ms = root.integer("startup_timeout_ms", max(1000, 2 * timeout_ms), 10, 60_000)
     miss_limit = root.integer("pdo_miss_limit", 5, 1, 1000)
     slow_every = root.integer("slow_feedback_every_n_sync", 5, 1, 240)
 
     axes_table = root.table("axes", required=True)
-    axes = {name: _read_axis(axes_table.table(name, required=True), axis)
-            for name, axis in config.axes.items()}
+    axes = {
+        name: _read_axis(axes_table.table(name, required=True), axis)
+        for name, axis in config.axes.items()
+    }
     axes_table.finish()
     io = _read_io(root.table("io", required=True))
     root.finish()
 
     seen: dict[int, str] = {}
-    for key, node_id in [*((f"axes.{n}.node_id", a.node_id) for n, a in axes.items()),
-                         ("io.node_id", io.node_id)]:
+    for key, node_id in [
+        *((f"axes.{n}.node_id", a.node_id) for n, a in axes.items()),
+        ("io.node_id", io.node_id),
+    ]:
         if node_id in seen:
-            raise ConfigError(f"{ROOT}.{key}", node_id,
-                              f"a node id no other node uses ({seen[node_id]} has {node_id})")
+            raise ConfigError(
+                f"{ROOT}.{key}",
+                node_id,
+                f"a node id no other node uses ({seen[node_id]} has {node_id})",
+            )
         seen[node_id] = key
 
-    settings = CanopenSettings(interface, channel, bitrate, config.period_s, heartbeat_ms,
-                               timeout_ms, sdo_timeout_ms, startup_ms, miss_limit, slow_every,
-                               axes, io)
+    settings = CanopenSettings(
+        interface,
+        channel,
+        bitrate,
+        config.period_s,
+        heartbeat_ms,
+        timeout_ms,
+        sdo_timeout_ms,
+        startup_ms,
+        miss_limit,
+        slow_every,
+        axes,
+        io,
+    )
     load = settings.bus_load()
     if load.maximum > MAX_BUS_LOAD:
-        raise ConfigError(f"{ROOT}.bitrate", bitrate,
-                          f"a bitrate that keeps the cyclic bus load under "
-                          f"{100 * MAX_BUS_LOAD:.0f} % (now {load.describe()}: raise the "
-                          "bitrate or backend.period_ms)")
+        raise ConfigError(
+            f"{ROOT}.bitrate",
+            bitrate,
+            f"a bitrate that keeps the cyclic bus load under "
+            f"{100 * MAX_BUS_LOAD:.0f} % (now {load.describe()}: raise the "
+            "bitrate or backend.period_ms)",
+        )
     return settings
 
 

@@ -27,8 +27,9 @@ IO_NODE = 10
 COUNTS = {"X": 1000.0, "Y": 1000.0, "Z": 10000.0}  # per mm, per mm, per degree
 INPUT_BITS = {name: bit for bit, name in enumerate(INPUT_FUNCTIONS)}
 OUTPUT_BITS = {name: bit for bit, name in enumerate(OUTPUT_FUNCTIONS)}
-HEALTHY_INPUTS = sum(1 << INPUT_BITS[n] for n in ("estop_ok", "guard_closed",
-                                                   "centering_retracted", "clamps_open"))
+HEALTHY_INPUTS = sum(
+    1 << INPUT_BITS[n] for n in ("estop_ok", "guard_closed", "centering_retracted", "clamps_open")
+)
 
 
 def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
@@ -41,8 +42,10 @@ def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
         "sdo_timeout_ms": 300,
         "startup_timeout_ms": 1000,
         "pdo_miss_limit": 25,
-        "axes": {name: {"node_id": node, "counts_per_unit": COUNTS[name]}
-                 for name, node in NODE_IDS.items()},
+        "axes": {
+            name: {"node_id": node, "counts_per_unit": COUNTS[name]}
+            for name, node in NODE_IDS.items()
+        },
         "io": {"node_id": IO_NODE, "inputs": dict(INPUT_BITS), "outputs": dict(OUTPUT_BITS)},
     }
     settings.update(overrides)
@@ -50,10 +53,18 @@ def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
 
 
 def machine_data(channel: str, **overrides: Any) -> dict[str, Any]:
-    return {"backend": {"name": "canopen", "period_ms": 4.0,
-                        "canopen": canopen_settings(channel, **overrides)},
-            "axes": {"X": {"encoder": "incremental"}, "Y": {"encoder": "incremental"},
-                     "Z": {"encoder": "absolute"}}}
+    return {
+        "backend": {
+            "name": "canopen",
+            "period_ms": 4.0,
+            "canopen": canopen_settings(channel, **overrides),
+        },
+        "axes": {
+            "X": {"encoder": "incremental"},
+            "Y": {"encoder": "incremental"},
+            "Z": {"encoder": "absolute"},
+        },
+    }
 
 
 @dataclass
@@ -114,9 +125,13 @@ def start(backend: MachineBackend) -> None:
         device.activate()
 
 
-def period(backend: MachineBackend, positions: Mapping[str, float] | None = None,
-           outputs: OutputImage | None = None, *, settle: bool = True,
-           ) -> tuple[dict[str, AxisFeedback], InputImage]:
+def period(
+    backend: MachineBackend,
+    positions: Mapping[str, float] | None = None,
+    outputs: OutputImage | None = None,
+    *,
+    settle: bool = True,
+) -> tuple[dict[str, AxisFeedback], InputImage]:
     """One machine period: read everything, then write everything (as the machine loop).
     ``settle``: wait for the nodes' answers (a test that expects a node to fail does not)."""
     feedback = dict(backend.motion.read_axes())
@@ -131,10 +146,12 @@ def period(backend: MachineBackend, positions: Mapping[str, float] | None = None
     return feedback, inputs
 
 
-def run_until(backend: MachineBackend, done: Callable[[dict[str, AxisFeedback]], bool],
-              max_periods: int = 200,
-              positions: Callable[[int], Mapping[str, float]] | None = None,
-              ) -> dict[str, AxisFeedback]:
+def run_until(
+    backend: MachineBackend,
+    done: Callable[[dict[str, AxisFeedback]], bool],
+    max_periods: int = 200,
+    positions: Callable[[int], Mapping[str, float]] | None = None,
+) -> dict[str, AxisFeedback]:
     """Run periods until ``done(feedback)``; fails after ``max_periods``."""
     for n in range(max_periods):
         feedback, _ = period(backend, positions(n) if positions else None)

@@ -38,8 +38,12 @@ S = Cia402State
 NOTIFIER_CYCLE_S = 0.02
 NMT_RESET_NODE = 0x81
 NMT_RESET_COMMUNICATION = 0x82
-NMT_STATE_CODES = {"INITIALISING": 0x00, "STOPPED": 0x04, "OPERATIONAL": 0x05,
-                   "PRE-OPERATIONAL": 0x7F}
+NMT_STATE_CODES = {
+    "INITIALISING": 0x00,
+    "STOPPED": 0x04,
+    "OPERATIONAL": 0x05,
+    "PRE-OPERATIONAL": 0x7F,
+}
 SUPPORTED_HOMING_METHODS = frozenset({17, 18, 19, 20, 21, 22, 33, 34, 35, 37})
 ABORT_VALUE_RANGE = 0x06090030
 ABORT_UNSUPPORTED_ACCESS = 0x06010000
@@ -79,7 +83,8 @@ class _HeartbeatProducer:
         while True:
             with self._cond:
                 self._cond.wait_for(
-                    lambda: self._stopped or (self._period_s > 0 and not self._silenced))
+                    lambda: self._stopped or (self._period_s > 0 and not self._silenced)
+                )
                 if self._stopped:
                     return
                 if self._cond.wait_for(lambda: self._stopped, self._period_s):
@@ -92,8 +97,9 @@ class _HeartbeatProducer:
 class _SimNmt(NmtSlave):
     """canopen's NMT slave with the heartbeat handed to our producer."""
 
-    def __init__(self, node_id: int, local_node: canopen.LocalNode,
-                 producer: _HeartbeatProducer) -> None:
+    def __init__(
+        self, node_id: int, local_node: canopen.LocalNode, producer: _HeartbeatProducer
+    ) -> None:
         super().__init__(node_id, local_node)
         self._producer = producer
 
@@ -308,12 +314,12 @@ class SimNode:
             return
         offset = 0
         for index, sub, bits in mapping:
-            self.node.set_data(index, sub, data[offset:offset + bits // 8])
+            self.node.set_data(index, sub, data[offset : offset + bits // 8])
             offset += bits // 8
 
     def _tpdo_payload(self, number: int) -> bytes:
         mapping = self._mapping(obj.TPDO_MAPPING + number - 1)
-        return b"".join(self.node.get_data(index, sub)[:bits // 8] for index, sub, bits in mapping)
+        return b"".join(self.node.get_data(index, sub)[: bits // 8] for index, sub, bits in mapping)
 
     def _send_tpdo(self, number: int) -> None:
         cob_id = self._stored(obj.TPDO_COMM + number - 1, 1) & 0x7FF
@@ -401,6 +407,7 @@ class SimNetwork:
 
 # ---- CiA 402 drive ---------------------------------------------------------------------------
 
+
 def _command(controlword: int) -> str:
     """Device control command of a controlword (bit 7 clear), CiA 402 table."""
     if controlword & 0x82 == 0x00:
@@ -459,8 +466,14 @@ class DriveRecord:
 class SimDrive(SimNode):
     """A CiA 402 servo drive: power state machine, CSP and homing, faults and EMCY."""
 
-    def __init__(self, network: SimNetwork, node_id: int, position_counts: int = 0,
-                 max_counts_per_sync: int = 10**9, homing_syncs: int = 5) -> None:
+    def __init__(
+        self,
+        network: SimNetwork,
+        node_id: int,
+        position_counts: int = 0,
+        max_counts_per_sync: int = 10**9,
+        homing_syncs: int = 5,
+    ) -> None:
         self.initial_position = position_counts
         self.max_counts_per_sync = max_counts_per_sync
         self.homing_syncs = homing_syncs
@@ -570,8 +583,7 @@ class SimDrive(SimNode):
             self._maybe_start_homing()
 
     def _maybe_start_homing(self) -> None:
-        if self.state is S.OPERATION_ENABLED and self.homing_left < 0 \
-                and not self.homing_attained:
+        if self.state is S.OPERATION_ENABLED and self.homing_left < 0 and not self.homing_attained:
             self.homing_left = self.homing_syncs
             self.homing_error = False
 
@@ -584,8 +596,10 @@ class SimDrive(SimNode):
         if self.mode_display == obj.MODE_CSP:
             self.homing_attained = False
             self.record.targets.append((self.sync_count, self.target))
-            step = max(-self.max_counts_per_sync,
-                       min(self.max_counts_per_sync, self.target - self.position))
+            step = max(
+                -self.max_counts_per_sync,
+                min(self.max_counts_per_sync, self.target - self.position),
+            )
             self.position += step
             window = self.read(obj.FOLLOWING_ERROR_WINDOW)
             if abs(self.target - self.position) > window:
@@ -610,6 +624,7 @@ class SimDrive(SimNode):
 
 
 # ---- CiA 401 I/O node --------------------------------------------------------------------
+
 
 class SimIoNode(SimNode):
     """16 digital inputs (0x6000) a test sets, 16 outputs (0x6200) the master writes."""

@@ -34,7 +34,7 @@ def assert_operator_reset(words: list[int]) -> None:
     """Bit 7 rises only after a period of 0x00, and nothing enables the drive afterwards."""
     first_edge = words.index(0x80)
     assert words[first_edge - 1] == 0x00
-    assert all(w in (0x00, 0x80) for w in words[first_edge - 1:])
+    assert all(w in (0x00, 0x80) for w in words[first_edge - 1 :])
     assert words[-1] == 0x00
 
 
@@ -77,10 +77,12 @@ def test_a_drive_fault_mid_cut_is_an_alarm_and_stays_disabled(backend, bench: Be
     bench.drives["Y"].inject_fault(0x2310)  # continuous over-current
     feedback = run_until(backend, lambda fb: fb["Y"].faulted, positions=ramp(2.0, 0.2))
     assert feedback["Y"].fault_code == 0x2310  # from the EMCY, before 0x603F comes in
-    feedback = run_until(backend, lambda fb: fb["Y"].power_state is S.FAULT,
-                         positions=ramp(2.0, 0.0))
-    feedback = run_until(backend, lambda fb: fb["Y"].fault_code == 0x2310, 20,
-                         positions=ramp(2.0, 0.0))
+    feedback = run_until(
+        backend, lambda fb: fb["Y"].power_state is S.FAULT, positions=ramp(2.0, 0.0)
+    )
+    feedback = run_until(
+        backend, lambda fb: fb["Y"].fault_code == 0x2310, 20, positions=ramp(2.0, 0.0)
+    )
     events = backend.motion.events()
     emergencies = [e for e in events if e.kind is DeviceEventKind.EMERGENCY]
     assert [(e.device, e.code) for e in emergencies] == [("Y (node 2)", 0x2310)]
@@ -150,8 +152,9 @@ def test_a_disabled_axis_is_commanded_to_where_it_is(backend, bench: Bench):
     feedback, _ = period(backend, {"X": 0.0})  # the machine still says 0: ignored
     feedback = run_until(backend, lambda fb: fb["X"].position == 7.5)
     backend.motion.enable("X")
-    feedback = run_until(backend, lambda fb: fb["X"].enabled,
-                         positions=lambda n: {})  # machine commands the measured position
+    feedback = run_until(
+        backend, lambda fb: fb["X"].enabled, positions=lambda n: {}
+    )  # machine commands the measured position
     for _ in range(5):
         feedback, _ = period(backend)
     assert feedback["X"].position == 7.5
@@ -200,7 +203,8 @@ def test_following_error_window_faults_the_drive(backend, bench: Bench):
     start(backend)
     enable_all(backend)
     bench.drives["X"].max_counts_per_sync = 500  # 0.5 mm per SYNC at most
-    feedback = run_until(backend, lambda fb: fb["X"].faulted,
-                         positions=lambda n: {"X": 1.5 * (n + 1)})
+    feedback = run_until(
+        backend, lambda fb: fb["X"].faulted, positions=lambda n: {"X": 1.5 * (n + 1)}
+    )
     feedback = run_until(backend, lambda fb: fb["X"].fault_code == 0x8611, 20)
     assert feedback["X"].faulted

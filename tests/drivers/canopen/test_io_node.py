@@ -28,8 +28,9 @@ def test_io_node_is_mapped_and_outputs_start_off(backend, bench: Bench):
 
 def test_inputs_by_function(backend, bench: Bench):
     start(backend)
-    bench.io.set_inputs(HEALTHY_INPUTS | 1 << INPUT_BITS["part_present"]
-                        | 1 << INPUT_BITS["start_button"])
+    bench.io.set_inputs(
+        HEALTHY_INPUTS | 1 << INPUT_BITS["part_present"] | 1 << INPUT_BITS["start_button"]
+    )
     _, inputs = period(backend)
     _, inputs = period(backend)
     assert inputs.part_present and inputs.start_button and inputs.estop_ok
@@ -43,8 +44,11 @@ def test_inputs_by_function(backend, bench: Bench):
 def test_outputs_by_function(backend, bench: Bench):
     start(backend)
     period(backend, outputs=OutputImage(spindle_on=True, lamp_green=True))
-    assert bench.io.wait(lambda: bench.io.outputs == (1 << OUTPUT_BITS["spindle_on"]
-                                                      | 1 << OUTPUT_BITS["lamp_green"]))
+    assert bench.io.wait(
+        lambda: (
+            bench.io.outputs == (1 << OUTPUT_BITS["spindle_on"] | 1 << OUTPUT_BITS["lamp_green"])
+        )
+    )
     period(backend, outputs=OutputImage(clamps_close=True))
     assert bench.io.wait(lambda: bench.io.outputs == 1 << OUTPUT_BITS["clamps_close"])
     backend.io.deactivate()

@@ -150,8 +150,11 @@ def test_an_unsupported_homing_method_is_refused_by_the_drive(channel, bench: Be
     data["backend"]["canopen"]["axes"]["X"]["homing_method"] = 24  # valid CiA, not this drive
     backend = create_backend(parse_config(data))
     try:
-        with pytest.raises(DriverError, match=r"SDO abort 0x06090030 \(Value range of "
-                                              r"parameter exceeded\) writing 0x6098:00"):
+        with pytest.raises(
+            DriverError,
+            match=r"SDO abort 0x06090030 \(Value range of "
+            r"parameter exceeded\) writing 0x6098:00",
+        ):
             backend.motion.configure()
     finally:
         backend.motion.shutdown()

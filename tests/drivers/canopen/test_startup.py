@@ -74,8 +74,9 @@ def test_one_sync_per_period_and_targets_taken_together(backend, bench: Bench):
     before = {n: d.sync_count for n, d in bench.drives.items()}
     for n in range(1, 21):
         period(backend, {"X": 0.1 * n, "Y": 0.1 * n})
-    assert all(d.wait(lambda d=d, n=n: d.sync_count - before[n] == 20)
-               for n, d in bench.drives.items())
+    assert all(
+        d.wait(lambda d=d, n=n: d.sync_count - before[n] == 20) for n, d in bench.drives.items()
+    )
     x_targets = dict(bench.drives["X"].record.targets)
     y_targets = dict(bench.drives["Y"].record.targets)
     moving = [k for k in x_targets if k > before["X"]]
@@ -101,7 +102,8 @@ def test_motion_commands_need_an_active_backend(backend):
 
 def test_configure_rejects_a_device_that_is_not_a_drive(backend, bench: Bench):
     bench.drives["Y"].node.data_store.setdefault(obj.DEVICE_TYPE, {})[0] = struct.pack(
-        "<I", 0x00030191)
+        "<I", 0x00030191
+    )
     with pytest.raises(Exception, match=r"Y \(node 2\).*not a CiA 402"):
         backend.motion.configure()
     assert backend.motion.lifecycle_state is LifecycleState.ERROR

@@ -1,0 +1,333 @@
+"""The pure rules, without a bus: controlword table, fault reset, homing phases, the
+simulated drive's transition table, the heartbeat watchdog on a simulated clock, bus load,
+EMCY texts, PDO packing and the settings reader."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.config import ConfigError, parse_config
+from app.drivers.canopen import objects as obj
+from app.drivers.canopen.busload import CyclicFrame, bus_load, frame_bits
+from app.drivers.canopen.cia402 import (
+    NEXT_CONTROLWORD,
+    RESET_EDGE_PERIODS,
+    AxisCommander,
+    CommandRefusedError,
+    HomingPhase,
+    PowerRequest,
+)
+from app.drivers.canopen.emcy_codes import emcy_text
+from app.drivers.canopen.motion import _interpolation_period
+from app.drivers.canopen.pdo import pack_drive_command, unpack_drive_feedback
+from app.drivers.canopen.settings import settings_from_config
+from app.drivers.canopen.watchdog import HeartbeatWatchdog
+from app.drivers.contracts import Cia402State
+from tests.drivers.canopen.conftest import machine_data
+from tests.drivers.canopen.sim_drive import DRIVE_TRANSITIONS, STATE_BITS, _command
+
+S = Cia402State
+SW = STATE_BITS  # a statusword per state
+
+
+# ---- controlword table ----------------------------------------------------------------------
+
+
+def test_every_request_and_state_has_a_controlword_and_none_resets():
+    assert set(NEXT_CONTROLWORD) == {(r, s) for r in PowerRequest for s in Cia402State}
+    assert not any(cw & 0x80 for cw in NEXT_CONTROLWORD.values())
+
+
+@pytest.mark.parametrize(("request_", "state"), sorted(NEXT_CONTROLWORD, key=str))
+def test_each_row_moves_the_simulated_drive_toward_the_request(request_, state):
+    """Walk the simulated drive's table with the backend's controlwords: every start state
+    reaches the requested state (or stays put where the request cannot apply), never
+    through a fault reset."""
+    goal = {
+        PowerRequest.ENABLED: S.OPERATION_ENABLED,
+        PowerRequest.DISABLED: S.SWITCH_ON_DISABLED,
+        PowerRequest.QUICK_STOP: S.QUICK_STOP_ACTIVE,
+    }[request_]
+    current = state
+    for _ in range(4):
+        word = NEXT_CONTROLWORD[(request_, current)]
+        current = DRIVE_TRANSITIONS.get((current, _command(word)), current)
+    if state in (S.FAULT, S.FAULT_REACTION_ACTIVE, S.NOT_READY_TO_SWITCH_ON):
+        assert current is state  # only the drive itself or an operator's reset leaves these
+    elif (
+        request_ is PowerRequest.QUICK_STOP
+        and state is not S.OPERATION_ENABLED
+        and state is not S.QUICK_STOP_ACTIVE
+    ):
+        assert current is S.SWITCH_ON_DISABLED  # quick stop of a drive not enabled
+    else:
+        assert current is goal
+
+
+def test_a_fault_drops_the_request_to_disabled():
+    commander = AxisCommander()
+    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
+    commander.enable()
+    commander.observe(SW[S.FAULT], obj.MODE_CSP)
+    assert commander.request is PowerRequest.DISABLED
+    with pytest.raises(CommandRefusedError, match="FAULT"):
+        commander.enable()
+    assert commander.command() == (0x00, obj.MODE_CSP)
+
+
+def test_fault_reset_sequence():
+    commander = AxisCommander()
+    commander.observe(SW[S.FAULT], obj.MODE_CSP)
+    commander.fault_reset()
+    assert commander.command()[0] == 0x00  # bit 7 low first
+    assert commander.command()[0] == 0x80  # then the rising edge
+    assert commander.command()[0] == 0x80  # held while the drive is still in FAULT
+    commander.observe(SW[S.SWITCH_ON_DISABLED], obj.MODE_CSP)
+    assert [commander.command()[0] for _ in range(5)] == [0x00] * 5  # and stays disabled
+
+
+def test_fault_reset_gives_up_after_a_bounded_edge():
+    commander = AxisCommander()
+    commander.observe(SW[S.FAULT], obj.MODE_CSP)
+    commander.fault_reset()
+    words = [commander.command()[0] for _ in range(RESET_EDGE_PERIODS + 10)]
+    assert words[0] == 0x00 and words.count(0x80) == RESET_EDGE_PERIODS
+    assert words[-1] == 0x00
+
+
+def test_homing_phases():
+    commander = AxisCommander()
+    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
+    commander.enable()
+    commander.start_homing()
+    assert commander.homing_active
+    assert commander.command() == (0x0F, obj.MODE_HOMING)  # select the mode first
+    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10, obj.MODE_HOMING)
+    assert commander.command() == (0x1F, obj.MODE_HOMING)  # bit 4: start
+    # an old "attained" from a previous homing does not count before the drive restarted
+    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10 | 1 << 12, obj.MODE_HOMING)
+    assert commander.homing is HomingPhase.RUNNING and not commander.homed
+    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_HOMING)  # in progress
+    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10 | 1 << 12, obj.MODE_HOMING)
+    assert commander.homed and commander.homing is HomingPhase.RETURN
+    assert commander.command() == (0x0F, obj.MODE_CSP)
+    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
+    assert not commander.homing_active
+
+
+def test_homing_is_aborted_by_a_quick_stop():
+    commander = AxisCommander()
+    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
+    commander.enable()
+    commander.start_homing()
+    commander.quick_stop()
+    assert commander.command() == (0x02, obj.MODE_CSP)
+    assert not commander.homed
+
+
+# ---- simulated drive's table ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("start", "command"), sorted(DRIVE_TRANSITIONS, key=str))
+def test_simulated_drive_rows_decode(start, command):
+    """Every row of the simulated drive's table is reached by a controlword of that command
+    (so the table and the controlword decoding agree)."""
+    words = {
+        "shutdown": 0x06,
+        "switch on": 0x07,
+        "enable operation": 0x0F,
+        "disable voltage": 0x00,
+        "quick stop": 0x02,
+    }
+    assert _command(words[command]) == command
+    assert DRIVE_TRANSITIONS[(start, command)] is not start
+
+
+# ---- heartbeat watchdog ---------------------------------------------------------------------
+
+
+def test_watchdog_reports_each_loss_and_return_once():
+    now = [0.0]
+    watchdog = HeartbeatWatchdog(0.15, clock=lambda: now[0])
+    watchdog.watch([1, 2])
+    now[0] = 0.1
+    watchdog.heard(1, 5)
+    assert watchdog.poll() == []
+    now[0] = 0.2  # node 2 silent for 0.2 s
+    changes = watchdog.poll()
+    assert [(c.node_id, c.lost) for c in changes] == [(2, True)]
+    assert watchdog.poll() == []  # reported once
+    now[0] = 0.3  # node 1 silent 0.2 s too
+    assert [(c.node_id, c.lost) for c in watchdog.poll()] == [(1, True)]
+    watchdog.heard(2, 5)
+    assert [(c.node_id, c.lost) for c in watchdog.poll()] == [(2, False)]
+    assert watchdog.nmt_state(2) == 5
+    watchdog.heard(9, 5)  # not watched: no effect
+    assert watchdog.poll() == []
+
+
+# ---- bus load -------------------------------------------------------------------------------
+
+
+def test_frame_bits():
+    assert frame_bits(0, worst_case=False) == 47
+    assert frame_bits(8, worst_case=False) == 111
+    assert frame_bits(8, worst_case=True) == 135
+    with pytest.raises(ValueError):
+        frame_bits(9, worst_case=False)
+
+
+def test_bus_load_of_the_guides_minimal_mapping():
+    """The guide's figure: 3 axes, controlword+target / statusword+position, SYNC, 1 Mbit/s:
+    15-19 % at 4 ms, 62-75 % at 1 ms."""
+    frames = [CyclicFrame("SYNC", 0, 1), CyclicFrame("RPDO", 6, 3), CyclicFrame("TPDO", 6, 3)]
+    at_4ms = bus_load(frames, 0.004, 1_000_000)
+    assert (round(100 * at_4ms.minimum, 1), round(100 * at_4ms.maximum, 1)) == (15.4, 18.6)
+    at_1ms = bus_load(frames, 0.001, 1_000_000)
+    assert 0.61 < at_1ms.minimum < 0.62 and 0.74 < at_1ms.maximum < 0.75
+
+
+def test_bus_load_of_our_mapping():
+    """The README's figures: the sample configuration (3 drives, I/O node, heartbeat 100 ms)."""
+    from app.config import load_config
+    from app.resources import resource_path
+
+    settings = settings_from_config(load_config(resource_path("machine-canopen.toml")))
+    load = settings.bus_load()
+    assert (round(100 * load.minimum, 1), round(100 * load.maximum, 1)) == (19.8, 24.0)
+
+
+def test_a_bus_load_too_high_is_refused(channel):
+    data = machine_data(channel)
+    data["backend"]["period_ms"] = 1.0
+    with pytest.raises(ConfigError, match=r"backend\.canopen\.bitrate .* under 60 %"):
+        settings_from_config(parse_config(data))
+
+
+# ---- EMCY texts, PDO packing, interpolation period -----------------------------------------
+
+
+def test_emcy_texts():
+    assert emcy_text(0x8611) == "Following error"
+    assert emcy_text(0x2310) == "Continuous over-current"
+    assert emcy_text(0x3211) == "DC link over-voltage (code 0x3211)"
+    assert emcy_text(0xFF42) == "Device specific (code 0xFF42)"
+    assert emcy_text(0xA000) == "Unknown error (code 0xA000)"
+
+
+def test_pdo_packing():
+    assert unpack_drive_feedback(pack_drive_command(0x0F, -123456, 8)) == (0x0F, -123456, 8)
+    with pytest.raises(ValueError, match="INTEGER32"):
+        pack_drive_command(0x0F, 2**31, 8)
+
+
+@pytest.mark.parametrize(
+    ("period_s", "expected"),
+    [(0.004, (4, -3)), (0.0025, (25, -4)), (0.001, (1, -3)), (0.05, (50, -3))],
+)
+def test_interpolation_period(period_s, expected):
+    assert _interpolation_period(period_s) == expected
+
+
+# ---- settings -------------------------------------------------------------------------------
+
+
+def settings_error(channel, mutate) -> ConfigError:
+    data = machine_data(channel)
+    mutate(data["backend"]["canopen"])
+    with pytest.raises(ConfigError) as caught:
+        settings_from_config(parse_config(data))
+    return caught.value
+
+
+@pytest.mark.parametrize(
+    ("mutate", "key", "allowed"),
+    [
+        (lambda s: s.update(bitrate=115200), "backend.canopen.bitrate", "one of 10000"),
+        (lambda s: s.update(interface="udp_multicast"), "backend.canopen.interface", "'socketcan'"),
+        (
+            lambda s: s.update(heartbeat_timeout_ms=60),
+            "backend.canopen.heartbeat_timeout_ms",
+            "at least 1.5 x heartbeat_ms",
+        ),
+        (lambda s: s.update(channel=""), "backend.canopen.channel", "channel name"),
+        (lambda s: s.update(sync_period_ms=4), "backend.canopen.sync_period_ms", "a known key"),
+        (
+            lambda s: s["axes"]["Y"].update(node_id=1),
+            "backend.canopen.axes.Y.node_id",
+            "axes.X.node_id has 1",
+        ),
+        (lambda s: s["io"].update(node_id=3), "backend.canopen.io.node_id", "axes.Z.node_id has 3"),
+        (
+            lambda s: s["axes"]["X"].update(node_id=128),
+            "backend.canopen.axes.X.node_id",
+            "from 1 to 127",
+        ),
+        (
+            lambda s: s["axes"]["X"].pop("counts_per_unit"),
+            "backend.canopen.axes.X.counts_per_unit",
+            "(required)",
+        ),
+        (
+            lambda s: s["axes"]["X"].update(counts_per_unit=1e6),
+            "backend.canopen.axes.X.counts_per_unit",
+            "32-bit position",
+        ),
+        (
+            lambda s: s["axes"]["Z"].update(homing_method=15),
+            "backend.canopen.axes.Z.homing_method",
+            "CiA 402 homing method",
+        ),
+        (lambda s: s["axes"].pop("Z"), "backend.canopen.axes.Z", "a table (required)"),
+        (
+            lambda s: s["io"]["inputs"].pop("estop_ok"),
+            "backend.canopen.io.inputs.estop_ok",
+            "(required)",
+        ),
+        (
+            lambda s: s["io"]["inputs"].update(estop_ok=0),
+            "backend.canopen.io.inputs.estop_ok",
+            "part_present has 0",
+        ),
+        (
+            lambda s: s["io"]["outputs"].update(spindle_on=16),
+            "backend.canopen.io.outputs.spindle_on",
+            "from 0 to 15",
+        ),
+        (
+            lambda s: s["io"].update(inverted_inputs=["estop"]),
+            "backend.canopen.io.inverted_inputs",
+            "estop_ok",
+        ),
+    ],
+)
+def test_settings_errors_name_the_key(channel, mutate, key, allowed):
+    error = settings_error(channel, mutate)
+    assert error.key == key
+    assert allowed in str(error)
+
+
+def test_settings_defaults(config):
+    settings = settings_from_config(config)
+    assert settings.heartbeat_ms == 50 and settings.slow_feedback_every_n_sync == 5
+    assert settings.axes["X"].to_counts(1.2345) == 1234
+    assert settings.axes["Z"].from_counts(-25_000) == -2.5
+    assert settings.io.input_bytes == 2 and settings.io.output_bytes == 1
+
+
+def test_an_inverted_axis_counts_the_other_way(channel):
+    data = machine_data(channel)
+    data["backend"]["canopen"]["axes"]["Y"]["invert"] = True
+    axis = settings_from_config(parse_config(data)).axes["Y"]
+    assert axis.to_counts(2.0) == -2000 and axis.from_counts(-2000) == 2.0
+
+
+def test_the_shipped_sample_configuration_is_valid():
+    from app.config import load_config
+    from app.resources import resource_path
+
+    config = load_config(resource_path("machine-canopen.toml"))
+    assert config.backend == "canopen"
+    settings = settings_from_config(config)
+    assert settings.interface == "socketcan" and settings.bitrate == 1_000_000
+    assert settings.bus_load().maximum < 0.30
