@@ -7,6 +7,7 @@ backend, so it behaves like the real machine, including when things go wrong:
   most 1 ms; operator actions (buttons, E-stop, guard, boards).
 - :mod:`.drive` (:class:`SimDrive`): a CiA 402 drive in cyclic synchronous position mode with
   a PI position loop, velocity feed-forward, current limit, switches, homing and fault codes.
+- :mod:`.cia402`: the standard's tables (commands, transitions, statusword, EMCY codes).
 - :mod:`.io`: cylinders with end sensors, spindle contactor, buttons, E-stop chain, lamps.
 - :mod:`.backend`: ``create_backend(config)``, the MotionBackend and DigitalIO adapters.
 - :mod:`.gauge`: ``create_gauge(config, backend)``, the width gauge.

@@ -53,7 +53,8 @@ from app.drivers.contracts import (
     MotionBackend,
     OutputImage,
 )
-from app.drivers.sim.drive import CW_BIT_HOMING_START, OperationMode, SimDrive
+from app.drivers.sim.cia402 import CW_BIT_HOMING_START, OperationMode
+from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.world import SimWorld
 

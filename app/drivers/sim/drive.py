@@ -9,10 +9,11 @@ flag the machine layer could not get from a real drive.
 What is modelled:
 
 - The power state machine (CiA 402 figure "state machine", transitions 0-16 in
-  :data:`TRANSITIONS`), evaluated on every controlword the master writes; fault reset is the
-  rising edge of bit 7 and ends in SWITCH ON DISABLED. Quick stop option code 6 (brake on the
-  quick-stop ramp and stay in QUICK STOP ACTIVE); disable operation, shutdown and disable
-  voltage remove torque at once (the load coasts against friction).
+  :data:`app.drivers.sim.cia402.TRANSITIONS`), evaluated on every controlword the master
+  writes; fault reset is the rising edge of bit 7 and ends in SWITCH ON DISABLED. Quick stop
+  option code 6 (brake on the quick-stop ramp and stay in QUICK STOP ACTIVE); disable
+  operation, shutdown and disable voltage remove torque at once (the load coasts against
+  friction).
 - Cyclic synchronous position mode (0x6060 = 8): each SYNC brings a target; the drive
   interpolates linearly from the previous target over one interpolation period (0x60C2 = the
   machine's period) and feeds the target velocity forward. A PI position loop plus the
@@ -70,102 +71,26 @@ from app.drivers.contracts import (
     AxisFeedback,
     Cia402State,
 )
+from app.drivers.sim.cia402 import (
+    CW_BIT_FAULT_RESET,
+    CW_BIT_HOMING_START,
+    EMCY_TEXT,
+    STATUSWORD_BASE,
+    SW_DRIVE_FOLLOWS,
+    SW_VOLTAGE_ENABLED,
+    TRANSITIONS,
+    EmcyCode,
+    OperationMode,
+    decode_controlword,
+)
 from app.drivers.sim.settings import SimSettings
 
 S = Cia402State
-
-CW_BIT_HOMING_START = 1 << 4  # controlword bit 4: homing operation start (homing mode)
-CW_BIT_FAULT_RESET = 1 << 7  # controlword bit 7: fault reset (rising edge)
-SW_VOLTAGE_ENABLED = 1 << 4  # statusword bit 4
-SW_DRIVE_FOLLOWS = 1 << 12  # statusword bit 12 in CSP: drive follows the command value
 
 CREEP_DIVISOR = 10.0  # slow approach of the home switch at homing_velocity / 10
 VELOCITY_LIMIT_FACTOR = 1.5  # motor speed limit as a multiple of the axis' max_velocity
 QUICK_STOP_SHARE = 0.6  # quick-stop deceleration as a share of the current limit
 
-
-class OperationMode(enum.IntEnum):
-    """0x6060 modes of operation used here."""
-
-    HOMING = 6
-    CYCLIC_SYNC_POSITION = 8
-
-
-class EmcyCode(enum.IntEnum):
-    """CiA 301 emergency error codes the simulated drive sends (0xFF00-0xFFFF: vendor)."""
-
-    CONTINUOUS_OVERCURRENT = 0x2310
-    HEARTBEAT = 0x8130  # life guard / heartbeat error: the master went silent
-    FOLLOWING_ERROR = 0x8611
-    POSITIVE_LIMIT_SWITCH = 0xFF01
-    NEGATIVE_LIMIT_SWITCH = 0xFF02
-    HOMING_FAILED = 0xFF03
-
-
-EMCY_TEXT: dict[int, str] = {
-    EmcyCode.CONTINUOUS_OVERCURRENT: "continuous overcurrent (power stage)",
-    EmcyCode.HEARTBEAT: "heartbeat of the master lost",
-    EmcyCode.FOLLOWING_ERROR: "following error",
-    EmcyCode.POSITIVE_LIMIT_SWITCH: "positive limit switch",
-    EmcyCode.NEGATIVE_LIMIT_SWITCH: "negative limit switch",
-    EmcyCode.HOMING_FAILED: "homing failed: home switch not found between the limit switches",
-}
-
-
-class Command(enum.Enum):
-    """Device control commands decoded from the controlword (bit 7 clear)."""
-
-    SHUTDOWN = "shutdown"  # 0xxx x110
-    SWITCH_ON = "switch on / disable operation"  # 0xxx 0111
-    ENABLE_OPERATION = "enable operation"  # 0xxx 1111
-    DISABLE_VOLTAGE = "disable voltage"  # 0xxx xx0x
-    QUICK_STOP = "quick stop"  # 0xxx x01x
-
-
-def decode_controlword(controlword: int) -> Command:
-    """The command a controlword with bit 7 clear encodes (CiA 402 table "device control")."""
-    if not controlword & 0x02:
-        return Command.DISABLE_VOLTAGE
-    if not controlword & 0x04:
-        return Command.QUICK_STOP
-    if not controlword & 0x01:
-        return Command.SHUTDOWN
-    if not controlword & 0x08:
-        return Command.SWITCH_ON
-    return Command.ENABLE_OPERATION
-
-
-# (state, command) -> (next state, CiA 402 transition number). Pairs not listed leave the
-# state unchanged. Transitions 0, 1 (power-up), 13, 14 (fault) and 15 (fault reset) are
-# internal or edge-triggered and handled by SimDrive itself.
-TRANSITIONS: dict[tuple[Cia402State, Command], tuple[Cia402State, str]] = {
-    (S.SWITCH_ON_DISABLED, Command.SHUTDOWN): (S.READY_TO_SWITCH_ON, "2"),
-    (S.READY_TO_SWITCH_ON, Command.SWITCH_ON): (S.SWITCHED_ON, "3"),
-    (S.READY_TO_SWITCH_ON, Command.ENABLE_OPERATION): (S.OPERATION_ENABLED, "3+4"),
-    (S.SWITCHED_ON, Command.ENABLE_OPERATION): (S.OPERATION_ENABLED, "4"),
-    (S.OPERATION_ENABLED, Command.SWITCH_ON): (S.SWITCHED_ON, "5"),
-    (S.SWITCHED_ON, Command.SHUTDOWN): (S.READY_TO_SWITCH_ON, "6"),
-    (S.READY_TO_SWITCH_ON, Command.DISABLE_VOLTAGE): (S.SWITCH_ON_DISABLED, "7"),
-    (S.READY_TO_SWITCH_ON, Command.QUICK_STOP): (S.SWITCH_ON_DISABLED, "7"),
-    (S.OPERATION_ENABLED, Command.SHUTDOWN): (S.READY_TO_SWITCH_ON, "8"),
-    (S.OPERATION_ENABLED, Command.DISABLE_VOLTAGE): (S.SWITCH_ON_DISABLED, "9"),
-    (S.SWITCHED_ON, Command.DISABLE_VOLTAGE): (S.SWITCH_ON_DISABLED, "10"),
-    (S.SWITCHED_ON, Command.QUICK_STOP): (S.SWITCH_ON_DISABLED, "10"),
-    (S.OPERATION_ENABLED, Command.QUICK_STOP): (S.QUICK_STOP_ACTIVE, "11"),
-    (S.QUICK_STOP_ACTIVE, Command.DISABLE_VOLTAGE): (S.SWITCH_ON_DISABLED, "12"),
-    (S.QUICK_STOP_ACTIVE, Command.ENABLE_OPERATION): (S.OPERATION_ENABLED, "16"),
-}
-
-STATUSWORD_BASE: dict[Cia402State, int] = {
-    S.NOT_READY_TO_SWITCH_ON: 0x00,
-    S.SWITCH_ON_DISABLED: 0x40,
-    S.READY_TO_SWITCH_ON: 0x21,
-    S.SWITCHED_ON: 0x23,
-    S.OPERATION_ENABLED: 0x27,
-    S.QUICK_STOP_ACTIVE: 0x07,
-    S.FAULT_REACTION_ACTIVE: 0x0F,
-    S.FAULT: 0x08,
-}
 
 _POWERED = (S.READY_TO_SWITCH_ON, S.SWITCHED_ON, S.OPERATION_ENABLED, S.QUICK_STOP_ACTIVE)
 # Module constants: faster than enum attribute lookups in the substep.

@@ -16,15 +16,14 @@ from app.drivers.contracts import (
     Cia402State,
     decode_statusword,
 )
-from app.drivers.sim.drive import (
+from app.drivers.sim.cia402 import (
     STATUSWORD_BASE,
     TRANSITIONS,
     Command,
-    DriveParams,
     EmcyCode,
-    SimDrive,
     decode_controlword,
 )
+from app.drivers.sim.drive import DriveParams, SimDrive
 from app.drivers.sim.settings import SimSettings
 from tests.drivers.sim.rig import make_config
 

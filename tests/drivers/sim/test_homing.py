@@ -11,7 +11,7 @@ from app.drivers.contracts import (
     AxisFeedback,
     Cia402State,
 )
-from app.drivers.sim.drive import OperationMode
+from app.drivers.sim.cia402 import OperationMode
 from tests.drivers.sim.rig import Rig, make_config
 
 S = Cia402State

@@ -11,7 +11,7 @@ from app.drivers.contracts import (
     Cia402State,
     DeviceEventKind,
 )
-from app.drivers.sim.drive import EmcyCode
+from app.drivers.sim.cia402 import EmcyCode
 from tests.drivers.sim.rig import Rig, trapezoid
 
 S = Cia402State
