@@ -227,12 +227,24 @@ def rest_state(chunk: Chunk) -> DofState:
     return (tuple(d.start for d in chunk.dofs), (0.0,) * n, (0.0,) * n)
 
 
+_NEGLIGIBLE = 1e-9
+"""Velocities and accelerations below this fraction of their limit are rounding residue of a
+trajectory that has come to rest; they are set to 0 (ruckig can fail on such residue next to
+its target)."""
+
+
 def _input(chunk: Chunk, state: DofState) -> InputParameter:
     dofs = chunk.dofs
     inp = InputParameter(len(dofs))
     inp.current_position = list(state[0])
-    inp.current_velocity = list(state[1])
-    inp.current_acceleration = list(state[2])
+    inp.current_velocity = [
+        0.0 if abs(v) < _NEGLIGIBLE * d.velocity_cap else v
+        for v, d in zip(state[1], dofs, strict=True)
+    ]
+    inp.current_acceleration = [
+        0.0 if abs(a) < _NEGLIGIBLE * d.acceleration else a
+        for a, d in zip(state[2], dofs, strict=True)
+    ]
     inp.max_acceleration = [d.acceleration for d in dofs]
     inp.max_jerk = [d.jerk for d in dofs]
     return inp
@@ -264,7 +276,15 @@ def plan_to_end(chunk: Chunk, state: DofState, override_pct: float) -> RuckigTra
     inp.target_position = [d.end for d in dofs]
     inp.target_velocity = [0.0] * len(dofs)
     inp.target_acceleration = [0.0] * len(dofs)
-    return _calculate(inp, f"{chunk.phase.value} move")
+    try:
+        return _calculate(inp, f"{chunk.phase.value} move")
+    except PlannerError:
+        if len(dofs) == 1:
+            raise
+        # Time synchronisation can fail numerically when one DOF is (almost) at its target;
+        # each DOF then simply runs its own time-optimal profile.
+        inp.synchronization = Synchronization.No
+        return _calculate(inp, f"{chunk.phase.value} move")
 
 
 def plan_to_rest(chunk: Chunk, state: DofState) -> RuckigTrajectory:

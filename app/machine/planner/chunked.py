@@ -40,7 +40,7 @@ class PlannedChunk:
 
     def sample(self, t_s: float) -> TrajectorySample:
         local = t_s - self.t_start_s
-        if local >= self.duration_s:  # exactly at the end, not within rounding of it
+        if t_s >= self.t_end_s:  # exactly at the end, not within rounding of it
             dofs = self.chunk.dofs
             positions: tuple[float, ...] = tuple(d.end for d in dofs)
             velocities: tuple[float, ...] = (0.0,) * len(dofs)

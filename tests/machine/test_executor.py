@@ -1,0 +1,278 @@
+"""The path executor: exactly the plan at 100 %, override changes without a velocity jump
+and within the limits, controlled stops along the path within the braking distance, hold
+at 0 %, abort freezes, and the feedback checks name the axis and the violation."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from app.drivers.contracts import AxisFeedback
+from app.machine.executor import (
+    ExecutorOutput,
+    ExecutorState,
+    PathExecutor,
+    ViolationKind,
+    check_feedback,
+)
+from app.machine.planner.point_to_point import plan_point_to_point
+from app.machine.planner.stave_plan import StavePlan
+from app.machine.planner.trajectory import Phase
+from tests.machine.planner.support import (
+    CONFIG,
+    LIMITS,
+    PERIOD_S,
+    assert_within_limits,
+    plan,
+)
+
+PLAN: StavePlan = plan()
+CUT_A = PLAN.phase_interval(Phase.CUT_A)
+assert CUT_A is not None
+
+
+def xyz(outputs: list[ExecutorOutput]) -> np.ndarray:
+    return np.array([(o.x, o.y, o.z) for o in outputs])
+
+
+def run(
+    executor: PathExecutor,
+    actions: dict[int, object],
+    limit: int = 100_000,
+) -> list[ExecutorOutput]:
+    """Step until done or stopped, calling actions[k](executor) before step k."""
+    outputs = [executor.last_output]
+    for k in range(1, limit):
+        action = actions.get(k)
+        if action is not None:
+            action(executor)  # type: ignore[operator]
+        outputs.append(executor.step())
+        if executor.done or executor.stopped:
+            break
+    return outputs
+
+
+def test_at_100_percent_the_stream_is_the_plan() -> None:
+    outputs = run(PathExecutor(PLAN, PERIOD_S), {})
+    rows = PLAN.setpoints(PERIOD_S)
+    assert len(outputs) == len(rows)
+    assert np.abs(xyz(outputs) - rows[:, 1:]).max() < 1e-9
+    assert outputs[-1].done and outputs[-1].xyz if False else outputs[-1].done
+    assert (outputs[-1].x, outputs[-1].y, outputs[-1].z) == PLAN.end_xyz
+
+
+def test_phases_and_cutting_flags_follow_the_plan() -> None:
+    executor = PathExecutor(PLAN, PERIOD_S)
+    seen = []
+    for out in run(executor, {}):
+        if not seen or seen[-1] is not out.phase:
+            seen.append(out.phase)
+        if out.cutting:
+            assert out.phase in (Phase.CUT_A, Phase.CUT_B)
+    assert seen == [Phase.APPROACH, Phase.CUT_A, Phase.REPOSITION, Phase.CUT_B, Phase.RETURN]
+
+
+def test_elapsed_remaining_and_progress() -> None:
+    executor = PathExecutor(PLAN, PERIOD_S)
+    assert executor.remaining_s == pytest.approx(PLAN.duration_s)
+    last_progress = executor.progress
+    for k in range(1, 3000):
+        executor.step()
+        assert executor.elapsed_s == pytest.approx(k * PERIOD_S)
+        assert executor.remaining_s == pytest.approx(PLAN.duration_s - k * PERIOD_S, abs=1e-6)
+        assert executor.progress >= last_progress
+        last_progress = executor.progress
+    executor.set_override(50.0)
+    slow = executor.remaining_s
+    executor.set_override(100.0)
+    assert slow > executor.remaining_s
+    while not executor.done:
+        executor.step()
+    assert executor.progress == 1.0 and executor.remaining_s == 0.0
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    changes=st.lists(
+        st.tuples(st.integers(1, int(CUT_A[1] / PERIOD_S)), st.floats(0.0, 120.0)),
+        min_size=1,
+        max_size=4,
+    )
+)
+def test_override_changes_keep_limits_path_and_continuity(changes) -> None:
+    actions = {k: (lambda e, p=percent: e.set_override(p)) for k, percent in changes}
+    last = max(k for k, _ in changes)
+    actions[last + 1] = lambda e: e.set_override(100.0)  # never stay held
+    outputs = run(PathExecutor(PLAN, PERIOD_S), actions)
+    assert outputs[-1].done
+    stream = xyz(outputs)
+    # FD acceleration within its limit implies no velocity jump between two periods
+    assert_within_limits(stream, step_times=())
+    assert PLAN.distances_to_path(stream[:, 0], stream[:, 1]).max() < 1e-6
+
+
+def test_override_scales_the_cutting_feed() -> None:
+    executor = PathExecutor(PLAN, PERIOD_S)
+    start = int((CUT_A[0] + CUT_A[1]) / 2 / PERIOD_S)
+    outputs = run(executor, {start: lambda e: e.set_override(120.0)}, limit=start + 400)
+    speed = math.hypot(outputs[-1].vx, outputs[-1].vy)
+    assert speed == pytest.approx(1.2 * LIMITS.feed_mm_s, rel=1e-9)
+    executor.set_override(37.5)
+    for _ in range(400):
+        out = executor.step()
+    assert math.hypot(out.vx, out.vy) == pytest.approx(0.375 * LIMITS.feed_mm_s, rel=1e-9)
+
+
+def test_zero_override_holds_on_the_path_and_resumes() -> None:
+    executor = PathExecutor(PLAN, PERIOD_S)
+    k_hold = int((CUT_A[0] + 3.0) / PERIOD_S)
+    outputs = run(executor, {k_hold: lambda e: e.set_override(0.0)}, limit=k_hold + 300)
+    assert executor.state is ExecutorState.HOLDING and not executor.stopped
+    assert executor.remaining_s == math.inf
+    assert outputs[-1] == outputs[-2]  # at rest
+    executor.set_override(100.0)
+    outputs += run(executor, {})
+    assert outputs[-1].done
+    stream = xyz(outputs)
+    assert_within_limits(stream)
+    assert PLAN.distances_to_path(stream[:, 0], stream[:, 1]).max() < 1e-6
+
+
+@pytest.mark.parametrize(
+    "when_s",
+    [0.3, CUT_A[0] + 0.05, CUT_A[0] + 4.0, CUT_A[1] - 0.05, CUT_A[1] + 0.5, PLAN.duration_s - 0.2],
+)
+def test_controlled_stop_stays_on_the_path_and_stops(when_s: float) -> None:
+    k_stop = int(when_s / PERIOD_S)
+    executor = PathExecutor(PLAN, PERIOD_S)
+    outputs = run(executor, {k_stop: lambda e: e.request_stop()})
+    assert executor.stopped and not executor.done
+    assert executor.state is ExecutorState.STOPPED and executor.remaining_s == 0.0
+    stream = xyz(outputs)
+    assert_within_limits(stream)
+    assert PLAN.distances_to_path(stream[:, 0], stream[:, 1]).max() < 1e-6
+    frozen = executor.step()
+    assert frozen == outputs[-1] and executor.step() == frozen
+    assert (frozen.vx, frozen.vy, frozen.vz) == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+
+
+def test_a_stop_while_cutting_at_the_feed_takes_exactly_the_braking_distance() -> None:
+    k_stop = int((CUT_A[0] + 4.0) / PERIOD_S)
+    executor = PathExecutor(PLAN, PERIOD_S)
+    outputs = run(executor, {k_stop: lambda e: e.request_stop()})
+    before = outputs[k_stop - 1]
+    v = LIMITS.feed_mm_s
+    assert math.hypot(before.vx, before.vy) == pytest.approx(v)
+    box = PLAN.chunks[1].chunk.s_dof
+    assert box is not None
+    # jerk-limited stop from cruise: v < A^2/J, so a = J t up then down, time 2 sqrt(v/J)
+    assert v < box.acceleration**2 / box.jerk
+    braking_mm = v * math.sqrt(v / box.jerk)
+    travelled = float(np.sum(np.hypot(*np.diff(xyz(outputs[k_stop - 1 :])[:, :2], axis=0).T)))
+    assert travelled == pytest.approx(braking_mm, rel=1e-6)
+    periods = len(outputs) - k_stop
+    assert periods == math.ceil(2 * math.sqrt(v / box.jerk) / PERIOD_S - 1e-9)
+
+
+def test_stop_during_a_tilting_travel_keeps_the_tilt_between_its_ends() -> None:
+    interval = PLAN.phase_interval(Phase.REPOSITION)
+    assert interval is not None
+    cross = next(
+        c for c in PLAN.chunks if c.chunk.z_dof is not None and c.chunk.phase is Phase.REPOSITION
+    )
+    k = int((cross.t_start_s + cross.duration_s / 2) / PERIOD_S)
+    executor = PathExecutor(PLAN, PERIOD_S)
+    outputs = run(executor, {k: lambda e: e.request_stop()})
+    z = xyz(outputs)[k:, 2]
+    lo, hi = sorted((cross.chunk.z_start, cross.chunk.z_end))
+    assert z.min() >= lo and z.max() <= hi
+    assert executor.stopped
+
+
+def test_abort_freezes_the_setpoint() -> None:
+    executor = PathExecutor(PLAN, PERIOD_S)
+    outputs = run(executor, {1000: lambda e: e.abort()})
+    assert executor.aborted and executor.stopped and not executor.done
+    assert outputs[-1] == outputs[-2]  # the step after abort repeats the last setpoint
+    for _ in range(10):
+        assert executor.step() == outputs[-1]
+    executor.set_override(50.0)
+    executor.request_stop()
+    assert executor.step() == outputs[-1]
+
+
+def test_a_point_to_point_move_runs_too() -> None:
+    move = plan_point_to_point((0.0, 0.0, 0.0), (500.0, 300.0, 5.0), LIMITS)
+    outputs = run(PathExecutor(move, PERIOD_S), {50: lambda e: e.set_override(30.0)})
+    assert outputs[-1].done and (outputs[-1].x, outputs[-1].y, outputs[-1].z) == pytest.approx(
+        (500.0, 300.0, 5.0)
+    )
+    assert_within_limits(xyz(outputs))
+
+
+@pytest.mark.parametrize("bad", [-1.0, 120.5, math.nan, True])
+def test_bad_override_is_refused_with_its_value(bad) -> None:
+    with pytest.raises(ValueError, match="override percent"):
+        PathExecutor(PLAN, PERIOD_S).set_override(bad)
+
+
+@pytest.mark.parametrize("bad", [0.0, -0.004, math.inf])
+def test_bad_period_is_refused(bad) -> None:
+    with pytest.raises(ValueError, match="period_s"):
+        PathExecutor(PLAN, bad)
+
+
+# -- check_feedback ---------------------------------------------------------------------------
+
+ENABLED = 0x27  # operation enabled
+HEALTHY = {name: AxisFeedback(name, ENABLED, 10.0, 0.0, 0.01) for name in ("X", "Y", "Z")}
+SETPOINT = {"X": 10.0, "Y": 10.0, "Z": 1.0}
+
+
+def test_healthy_feedback_has_no_violation() -> None:
+    assert check_feedback(HEALTHY, SETPOINT, CONFIG.axes) == []
+
+
+@pytest.mark.parametrize(
+    ("axis", "change", "kind", "text"),
+    [
+        ("X", {"following_error": 2.5}, ViolationKind.FOLLOWING_ERROR, "following error 2.500"),
+        ("Y", {"following_error": -2.1}, ViolationKind.FOLLOWING_ERROR, "exceeds 2 mm"),
+        ("Z", {"limit_positive": True}, ViolationKind.LIMIT_POSITIVE, "positive limit"),
+        ("X", {"limit_negative": True}, ViolationKind.LIMIT_NEGATIVE, "negative limit"),
+        (
+            "Y",
+            {"statusword": 0x08, "fault_code": 0x7500},
+            ViolationKind.DRIVE_FAULT,
+            "fault code 0x7500",
+        ),
+        ("Z", {"statusword": 0x40}, ViolationKind.NOT_ENABLED, "switch on disabled"),
+    ],
+)
+def test_each_violation_names_the_axis(axis, change, kind, text) -> None:
+    feedback = dict(HEALTHY)
+    feedback[axis] = replace(feedback[axis], **change)
+    violations = check_feedback(feedback, SETPOINT, CONFIG.axes)
+    assert [(v.axis, v.kind) for v in violations] == [(axis, kind)]
+    assert violations[0].message.startswith(f"axis {axis}:") and text in violations[0].message
+
+
+def test_not_enabled_is_only_a_violation_while_moving_and_missing_feedback_is() -> None:
+    feedback = dict(HEALTHY)
+    feedback["X"] = replace(feedback["X"], statusword=0x40)
+    assert check_feedback(feedback, None, CONFIG.axes, motion_active=False) == []
+    del feedback["Y"]
+    kinds = [v.kind for v in check_feedback(feedback, None, CONFIG.axes, motion_active=False)]
+    assert kinds == [ViolationKind.NO_FEEDBACK]
+
+
+def test_a_setpoint_beyond_the_soft_limit_is_a_violation() -> None:
+    violations = check_feedback(HEALTHY, {"X": 4000.0, "Y": 0.0, "Z": 0.0}, CONFIG.axes)
+    assert [(v.axis, v.kind, v.limit) for v in violations] == [
+        ("X", ViolationKind.SOFT_LIMIT, CONFIG.axes["X"].max_position)
+    ]
