@@ -85,11 +85,11 @@ def peaks(
     lim = np.array([[ax.velocity, ax.acceleration, ax.jerk] for ax in limits.axes])
     if jerk_mask is not None:
         j = j[jerk_mask]
-    return Peaks(
-        np.abs(v).max(axis=0) / lim[:, 0],
-        np.abs(a).max(axis=0) / lim[:, 1],
-        (np.abs(j).max(axis=0) if len(j) else np.zeros(3)) / lim[:, 2],
-    )
+
+    def peak(values: np.ndarray) -> np.ndarray:
+        return np.abs(values).max(axis=0) if len(values) else np.zeros(3)
+
+    return Peaks(peak(v) / lim[:, 0], peak(a) / lim[:, 1], peak(j) / lim[:, 2])
 
 
 def jerk_mask(count: int, step_times: tuple[float, ...], period_s: float = PERIOD_S) -> np.ndarray:
