@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TextIO
 
+import numpy as np
+
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
 from app.drivers.contracts import FAULT_KINDS, FaultInjector
@@ -73,6 +75,17 @@ class Watch:
     trace: Any = None
     operator_acted: bool = False
     _settled_periods: int = 0
+    _cut_xy: list[tuple[float, float]] = field(default_factory=list)
+    _plan: Any = None
+
+    def flush_contour_error(self) -> None:
+        """Distances of the actual positions while cutting from the exact tool path,
+        computed in one vectorised call when the cut is over."""
+        if self._cut_xy and self._plan is not None:
+            xy = np.asarray(self._cut_xy)
+            errors = self._plan.distances_to_path(xy[:, 0], xy[:, 1])
+            self.max_contour_error_mm = max(self.max_contour_error_mm, float(errors.max()))
+        self._cut_xy.clear()
 
     def observe(self, runtime: MachineRuntime) -> None:
         c = runtime.controller
@@ -80,8 +93,10 @@ class Watch:
             last = c.cycle.last_output
             if last is not None and last.cutting:
                 x, y, _z = c.axes.positions()
-                error = c.cycle.planned.plan.distance_to_path(x, y)
-                self.max_contour_error_mm = max(self.max_contour_error_mm, error)
+                self._cut_xy.append((x, y))
+                self._plan = c.cycle.planned.plan
+        elif self._cut_xy:
+            self.flush_contour_error()
         if c.state in LATCHED_STATES and not self.operator_acted:
             self._watch_latched(c)
         if self.trace is not None:
@@ -239,6 +254,7 @@ def _run_cycle(runtime: MachineRuntime, width_mm: float, injection: Injection | 
         if report.result == "ok":
             report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
             report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
+    watch.flush_contour_error()
     report.max_contour_error_mm = watch.max_contour_error_mm
     watch.max_contour_error_mm = 0.0
     return report

@@ -128,7 +128,8 @@ class MachineController:
         self._plan_id = 0
         self._seq = 0
         self._moved_since_latch = False
-        self._last_piece: PieceRecord | None = None
+        self._finished_board_on_table = False
+        self._pending_board: tuple[float | None] | None = None
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         recipe_id = store.first_recipe_id()
         if recipe_id is not None:
@@ -210,7 +211,8 @@ class MachineController:
         self.cycle = AutomaticCycle(recipe=recipe, config=self.config, gauge=self.gauge,
                                     plan_job=plan_job, submit=self._submit,
                                     started_s=self.now_s,
-                                    feed_override_pct=self.feed_override_pct)
+                                    feed_override_pct=self.feed_override_pct,
+                                    board_already_cut=self._finished_board_on_table)
         self.message = ""
         self._transition(Event.START)
 
@@ -313,10 +315,20 @@ class MachineController:
             injector.clear_injections()
 
     def _on_LoadBoard(self, c: cmd.LoadBoard) -> None:
+        """Simulation: take the board off (the part sensor must see it gone) and put a new
+        one on in the next period."""
         world = self.backend.extras.get("world")
-        load = getattr(world, "load_board", None)
-        if callable(load):
-            load(c.width_mm)
+        remove = getattr(world, "remove_board", None)
+        if callable(remove):
+            remove()
+            self._pending_board = (c.width_mm,)
+
+    def _load_pending_board(self) -> None:
+        if self._pending_board is not None and not self.inputs.part_present:
+            load = getattr(self.backend.extras.get("world"), "load_board", None)
+            if callable(load):
+                load(self._pending_board[0])
+            self._pending_board = None
 
     def _on_SetUser(self, c: cmd.SetUser) -> None:
         self.user = c.name
@@ -354,10 +366,21 @@ class MachineController:
             self.cycle = None
         self.homing = None
         self.manual.release_all(immediate=True)
+        self.outputs = replace(self.outputs, spindle_on=False, centering_extend=False)
         if self.axes.feedback:
             self.axes.hold_where_they_are()
-            self.axes.quick_stop_all()
-        self.outputs = replace(self.outputs, spindle_on=False, centering_extend=False)
+            self._device_call(self.axes.quick_stop_all)
+
+    def _device_call(self, action: Callable[[], None]) -> None:
+        """A stop or power request while the link may be gone: a failure is logged, never
+        raised, because the latched state already holds and the drives stop on their own
+        watchdog when the link is lost."""
+        if not self._comms_ok:
+            return
+        try:
+            action()
+        except DriverError as exc:
+            log.warning("%s", exc)
 
     # ---------------------------------------------------------------- the period
     def tick(self, now_s: float) -> None:
@@ -368,6 +391,9 @@ class MachineController:
             self._comms_lost(exc)
             self._process_commands()
             return
+        if not self.inputs.part_present:
+            self._finished_board_on_table = False
+        self._load_pending_board()
         self._process_buttons()
         self._supervise()
         self._process_commands()
@@ -406,8 +432,6 @@ class MachineController:
 
     def _comms_lost(self, exc: DriverError) -> None:
         self._comms_ok = False
-        if self.cycle is not None:
-            self.cycle.abort()
         self._fault("E020", exc.device, str(exc))
 
     def _reconnect(self) -> None:
@@ -446,8 +470,7 @@ class MachineController:
             if self.state is not MachineState.EMERGENCY_STOP:
                 if self.cycle is not None:
                     self._record_abort("E001")
-                self._stop_now()
-                self.axes.disable_all()
+                self._stop_now()  # quick stop on the drives' ramps; power off once still
                 self._transition(Event.ESTOP)
         else:
             self.alarms.clear("E001", "E-stop chain")
@@ -558,6 +581,7 @@ class MachineController:
         self.finished_cycles.append((piece, cycle))
         del self.finished_cycles[:-10]
         self.cycle = None
+        self._finished_board_on_table = True
         self._transition(Event.CYCLE_DONE)
 
     def _piece_record(self, cycle: AutomaticCycle, cycle_time_s: float, result: str,
@@ -580,7 +604,7 @@ class MachineController:
     def _watch_latched_motion(self) -> None:
         """Latched states: once the axes stand still, take their power (stop category 1)."""
         if self.state in LATCHED_STATES and self.axes.standing_still(tolerance=0.5):
-            self.axes.disable_all()
+            self._device_call(self.axes.disable_all)
 
     def _lamps(self) -> None:
         running = self.state in (MachineState.AUTOMATIC, MachineState.HOMING)

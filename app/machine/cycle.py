@@ -87,6 +87,7 @@ class AutomaticCycle:
         submit: PlanSubmitter,
         started_s: float,
         feed_override_pct: float,
+        board_already_cut: bool = False,
     ) -> None:
         self.recipe = recipe
         self._config = config
@@ -104,6 +105,8 @@ class AutomaticCycle:
         self.finished = False
         self._stop_requested = False
         self._override_pct = feed_override_pct
+        # The board on the table is the one just finished: wait until it is taken off.
+        self.board_already_cut = board_already_cut
         self.plan_counter = 0
 
     # -- helpers ---------------------------------------------------------------------------
@@ -172,7 +175,9 @@ class AutomaticCycle:
 
         if step is CycleStep.WAIT_FOR_PART:
             axes.request_enable()
-            if inputs.part_present and axes.all_enabled():
+            if not inputs.part_present:
+                self.board_already_cut = False
+            if inputs.part_present and not self.board_already_cut and axes.all_enabled():
                 outputs = replace(outputs, clamps_close=False, centering_extend=True)
                 self._go(CycleStep.CENTERING, now_s)
         elif step is CycleStep.CENTERING:
