@@ -15,9 +15,15 @@ Rules, all from CiA 402 and the project's safety notes:
   one period, then "disable voltage": the drive ends in SWITCH ON DISABLED, not enabled.
 - ``start_homing`` (once OPERATION ENABLED): mode = homing with bit 4 low for one period,
   then bit 4 high (the rising edge starts the drive's homing method) until the drive reports
-  "homing attained" and "target reached" after having been seen in progress; then back to
-  the position mode. "Homing error" (bit 13 in homing mode) or leaving OPERATION ENABLED
-  ends the homing unsuccessfully.
+  "homing attained" and "target reached" after having been seen in progress (or after
+  "attained" was seen clear just before the start edge: a drive starting on its reference
+  edge may finish within one period); then back to the position mode. "Homing error"
+  (bit 13 in homing mode) or leaving OPERATION ENABLED ends the homing unsuccessfully.
+- A successful homing stays "active" for one more period, in position mode with the target
+  at the actual position: the drive moves its encoder frame to the machine frame at the
+  reference and may finish within the same period, so the first period that shows the new
+  frame must still be one in which the master commands the axis where it is (a command
+  position from the old frame would be a jump of the whole offset).
 """
 
 from __future__ import annotations
@@ -58,6 +64,7 @@ class HomingPhase(enum.Enum):
     ARM = "homing mode, bit 4 low"
     START = "bit 4 high"
     RUNNING = "running"
+    FINISH = "one more period at the actual position, in position mode"
 
 
 # Enable walk: state -> controlword that moves it one step towards OPERATION ENABLED.
@@ -154,13 +161,19 @@ class Cia402Commander:
             if not attained and not reached:
                 self._seen_in_progress = True
             elif attained and reached and self._seen_in_progress:
-                self._homing = HomingPhase.IDLE
+                self._homing = HomingPhase.FINISH
                 self.last_homing = HomingOutcome(True)
                 return self.last_homing
             elif reached and not attained and self._seen_in_progress:
                 return self._abort_homing("homing stopped without finding the reference")
-        elif phase is HomingPhase.ARM and state is not S.OPERATION_ENABLED:
-            return self._abort_homing(f"drive left operation enabled ({state.value})")
+        elif phase is HomingPhase.ARM:
+            if state is not S.OPERATION_ENABLED:
+                return self._abort_homing(f"drive left operation enabled ({state.value})")
+            # Homing mode, bit 4 still low: a clear "attained" bit now means an "attained"
+            # after the start edge belongs to this run, even if the drive finishes within
+            # one period (it started on the reference edge); a set one is an earlier run's
+            # (or CSP's "drive follows"), and the run must be seen in progress first.
+            self._seen_in_progress = not statusword & SW_HOMING_ATTAINED
         return None
 
     def command(self) -> Command:
@@ -185,6 +198,9 @@ class Cia402Commander:
             return Command(controlword | CW_HOMING_START, self.homing_mode, True)
         if phase in (HomingPhase.START, HomingPhase.RUNNING):
             return Command(controlword | CW_HOMING_START, self.homing_mode, True)
+        if phase is HomingPhase.FINISH:
+            self._homing = HomingPhase.IDLE
+            return Command(controlword, self.position_mode, True)
         return Command(
             controlword, self.position_mode, not enabled or phase is not HomingPhase.IDLE
         )

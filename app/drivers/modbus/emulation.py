@@ -29,7 +29,8 @@ from app.drivers.modbus.settings import (
     RegisterTable,
     parse_modbus_settings,
 )
-from app.drivers.sim.drive import OperationMode, SimDrive
+from app.drivers.sim.cia402 import OperationMode
+from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.world import SimWorld
 
 

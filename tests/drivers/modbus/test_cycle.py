@@ -1,0 +1,107 @@
+"""A full automatic cycle on the Modbus backend: the real machine layer (state machine, cycle,
+planner, executor) drives the emulated drives and I/O coupler over Modbus TCP, and measures
+the board with the serial gauge on a pty, as it would on the machine."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from app.config import parse_config
+from app.data.recipe_files import load_recipe_file
+from app.drivers.contracts import Cia402State
+from app.drivers.modbus.emulator import ModbusEmulator
+from app.machine import commands as cmd
+from app.machine.cli_simulate import Watch
+from app.machine.runtime import MachineRuntime
+from app.machine.states import LATCHED_STATES, MachineState
+from tests.drivers.modbus.helpers import machine_table, tcp_modbus, with_port
+from tests.drivers.serial_gauge.fake_gauge import FakeGauge
+
+ROOT = Path(__file__).resolve().parents[3]
+BOARD_MM = 150.0
+
+
+def test_full_automatic_cycle_on_modbus(tmp_path: Path) -> None:
+    gauge = FakeGauge()
+    # 20 ms: the test's machine time runs as fast as the Modbus exchanges allow, and fewer
+    # periods keep the test short; the cycle is the same at any period.
+    # X and Y have incremental encoders: the machine homes the axes through the drives'
+    # homing method, over Modbus, before the cycle. The home switches sit inside the soft
+    # limits (a drive stops a little past the reference edge; on the soft limit itself the
+    # machine layer refuses to hold the axis there: reported to the lead).
+    table = machine_table(
+        tcp_modbus(),
+        period_ms=20.0,
+        # Z (absolute) parked on its reference edge: its drive finishes
+        # homing within one period.
+        sim={"start_position": {"X": 40.0, "Y": 30.0, "Z": 0.0}},
+        axes={
+            "X": {"encoder": "incremental", "home_switch_position": 0.0},
+            "Y": {"encoder": "incremental", "home_switch_position": 0.0},
+            "Z": {"home_switch_position": 0.0},
+        },
+    )
+    table["gauge"] = {"name": "serial", "serial": {"port": gauge.path}}
+    emulator = ModbusEmulator(parse_config(table))
+    world = emulator.world
+
+    def width_line() -> bytes:
+        board = world.board
+        return f"W={board.true_width_mm:.2f}\r\n".encode() if board else b"W=0.00\r\n"
+
+    gauge.reply_for = width_line
+    runtime: MachineRuntime | None = None
+    spindle_seen: list[bool] = []
+    try:
+        config = with_port(table, emulator.serve_tcp())
+        runtime = MachineRuntime.create(config, tmp_path / "cycle.db")
+        assert runtime.backend.name == "modbus"
+        watch = Watch()
+        runtime.on_tick.append(watch.observe)
+        runtime.on_tick.append(lambda _rt: spindle_seen.append(world.outputs.spindle_on))
+        runtime.start()
+        c = runtime.controller
+        recipe = c.store.save_recipe(
+            load_recipe_file(ROOT / "resources" / "recipes" / "sample_recipes.json")[0]
+        )
+        assert recipe.id is not None
+        c.post(cmd.SelectRecipe(recipe.id))
+        assert c.state is MachineState.NOT_HOMED
+        c.post(cmd.Home())
+        runtime.run_until(
+            lambda m: m.state is MachineState.READY or m.state in LATCHED_STATES, 300.0
+        )
+        assert c.state is MachineState.READY, c.state_text()
+        assert c.axes.all_homed()
+        world.load_board(BOARD_MM)
+        runtime.run_for(0.1)
+        requests_before = sum(emulator.requests.values())
+        c.post(cmd.Start())
+        runtime.run_for(2 * runtime.period_s)
+        assert runtime.run_until(
+            lambda m: (
+                m.state in LATCHED_STATES or (m.state is MachineState.READY and m.cycle is None)
+            ),
+            300.0,
+        ), c.state_text()
+        assert c.state is MachineState.READY, c.state_text()
+        assert [a.code for a in c.alarms.views()] == []
+        assert c.pieces_total == 1 and len(c.finished_cycles) == 1
+        piece, cycle = c.finished_cycles[0]
+        assert piece.width_mm == pytest.approx(BOARD_MM, abs=0.01)  # measured by the gauge
+        assert cycle.outcome.d_mm is not None and cycle.outcome.d_mm > 0
+        watch.flush_contour_error()
+        assert watch.max_contour_error_mm < 0.1
+        # Everything went over the wire: the coupler switched the spindle on and off again,
+        # the drives moved the cutter, and none of them faulted.
+        assert any(spindle_seen) and not world.outputs.spindle_on
+        assert sum(emulator.requests.values()) - requests_before > 1000
+        assert all(d.state is not Cia402State.FAULT for d in world.drives.values())
+        assert gauge.requests >= 2  # configure's check, then the board
+    finally:
+        if runtime is not None:
+            runtime.shutdown()
+        emulator.stop()
+        gauge.close()
