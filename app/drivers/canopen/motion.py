@@ -12,7 +12,8 @@ Safety rules kept here (see cia402.py for the controlword itself):
   ``JUMP_PERIODS`` periods at the axis' maximum velocity is refused with a DriverError and
   nothing is sent that period;
 - a lost node (heartbeat, reboot, missing TPDOs, dead receive thread) latches the backend in
-  ERROR and sends quick stop to every drive still reachable;
+  ERROR, sends quick stop (controlword 0x02) and one SYNC to every drive, and clears the
+  homed flag of the lost drives (they may have been power-cycled unseen);
 - the backend never resets or enables a drive by itself.
 """
 

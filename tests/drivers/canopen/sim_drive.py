@@ -473,8 +473,10 @@ class SimDrive(SimNode):
         position_counts: int = 0,
         max_counts_per_sync: int = 10**9,
         homing_syncs: int = 5,
+        homing_overshoot_counts: int = 0,
     ) -> None:
         self.initial_position = position_counts
+        self.homing_overshoot_counts = homing_overshoot_counts  # stops past the switch edge
         self.max_counts_per_sync = max_counts_per_sync
         self.homing_syncs = homing_syncs
         self.record = DriveRecord()
@@ -618,7 +620,7 @@ class SimDrive(SimNode):
                     if self.inject_homing_error:
                         self.homing_error = True
                     else:
-                        self.position = self.read(obj.HOME_OFFSET)
+                        self.position = self.read(obj.HOME_OFFSET) + self.homing_overshoot_counts
                         self.target = self.position
                         self.homing_attained = True
 
@@ -650,3 +652,58 @@ class SimIoNode(SimNode):
             assert isinstance(value, int)
             shift = 8 * (subindex - 1)
             self.outputs = (self.outputs & ~(0xFF << shift)) | (value << shift)
+
+
+class SimStationIo(SimIoNode):
+    """The I/O node wired to a simulated station: centering device, clamps and spindle answer
+    their outputs with their sensors after a travel time counted in SYNCs (machine periods),
+    and a board is put on the table by the test (``part_present``)."""
+
+    def __init__(
+        self,
+        network: SimNetwork,
+        node_id: int,
+        inputs: dict[str, int],
+        outputs: dict[str, int],
+        travel_syncs: int = 10,
+    ) -> None:
+        self.input_bits = inputs
+        self.output_bits = outputs
+        self.travel_syncs = travel_syncs
+        self.part_present = False
+        self._moving: dict[str, int] = {}  # output name -> SYNCs since it changed
+        self._last: dict[str, bool] = {}
+        super().__init__(network, node_id)
+        self.inputs = self._sensor_bits(centering=False, clamps=False, spindle=False)
+
+    def _on(self, name: str) -> bool:
+        return bool(self.outputs >> self.output_bits[name] & 1)
+
+    def _sensor_bits(self, *, centering: bool | None, clamps: bool | None, spindle: bool) -> int:
+        values = {
+            "part_present": self.part_present,
+            "guard_closed": True,
+            "estop_ok": True,
+            "centering_extended": centering is True,
+            "centering_retracted": centering is False,
+            "clamps_closed": clamps is True,
+            "clamps_open": clamps is False,
+            "spindle_running": spindle,
+        }
+        return sum(1 << self.input_bits[n] for n, on in values.items() if on)
+
+    def on_sync(self) -> None:
+        state: dict[str, bool | None] = {}
+        for name in ("centering_extend", "clamps_close", "spindle_on"):
+            on = self._on(name)
+            if self._last.get(name) != on:
+                self._last[name] = on
+                self._moving[name] = 0
+            self._moving[name] = self._moving.get(name, 0) + 1
+            arrived = self._moving[name] >= self.travel_syncs
+            state[name] = on if arrived else None  # None: travelling, both sensors off
+        self.inputs = self._sensor_bits(
+            centering=state["centering_extend"],
+            clamps=state["clamps_close"],
+            spindle=state["spindle_on"] is True,
+        )
