@@ -23,6 +23,7 @@ The rules (what a PLC's Modbus master does, and what a technician expects):
 
 from __future__ import annotations
 
+import logging
 import time
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
@@ -44,6 +45,7 @@ from app.drivers.modbus.link import (
 from app.drivers.modbus.settings import Endpoint, LinkSettings
 
 T = TypeVar("T")
+log = logging.getLogger(__name__)
 
 
 class TransientError(Exception):
@@ -220,6 +222,9 @@ class ModbusBus:
             reason = f"{failure}; {count} failed exchanges in a row"
             self._declare_lost(device, reason)
             raise CommunicationError(device.name, reason)
+        log.warning(
+            "%s: %s (failure %d of %d in a row, tolerated)", device.name, failure, count, limit
+        )
         raise TransientError(failure)
 
     def _account(self, started: float) -> None:
@@ -234,6 +239,7 @@ class ModbusBus:
             return
         self._state.lost = True
         self._state.reason = f"{device.name}: {reason}"
+        log.error("Modbus link lost: %s", self._state.reason)
         self._close_all()
         self._events.append(
             DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, device.name, text=reason)

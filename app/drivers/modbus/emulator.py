@@ -28,8 +28,9 @@ import asyncio
 import signal
 import sys
 import threading
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Coroutine, Iterable, Sequence
 from types import TracebackType
+from typing import Any
 
 from pymodbus.constants import ExcCodes
 from pymodbus.server import ModbusSerialServer, ModbusTcpServer
@@ -180,7 +181,7 @@ class ModbusEmulator:
                 drive.write(address, [int(v) for v in set_values])
         return None
 
-    def _trace_packet(self, unit_offset: int) -> object:
+    def _trace_packet(self, unit_offset: int) -> Callable[[bool, bytes], bytes]:
         def trace(sending: bool, data: bytes) -> bytes:
             if sending and len(data) > unit_offset and data[unit_offset] in self._muted_units:
                 return b""
@@ -200,13 +201,14 @@ class ModbusEmulator:
             raise ValueError(f"devices {chosen} share unit ids {units}: serve them apart")
         return [self._sim_device(n) for n in chosen]
 
-    def _run(self, coroutine_factory: object) -> ModbusBaseServer:
+    def _run(
+        self, coroutine_factory: Callable[[], Coroutine[Any, Any, ModbusBaseServer]]
+    ) -> ModbusBaseServer:
         if self._loop is None:
             loop = asyncio.new_event_loop()
             thread = threading.Thread(target=loop.run_forever, name="modbus-emulator", daemon=True)
             thread.start()
             self._loop, self._thread = loop, thread
-        assert callable(coroutine_factory)
         future = asyncio.run_coroutine_threadsafe(coroutine_factory(), self._loop)
         server: ModbusBaseServer = future.result(timeout=10.0)
         self._servers.append(server)
@@ -222,7 +224,7 @@ class ModbusEmulator:
             server = ModbusTcpServer(
                 sim_devices,
                 address=(host, port),
-                trace_packet=self._trace_packet(6),  # type: ignore[arg-type]
+                trace_packet=self._trace_packet(6),
                 trace_connect=self._trace_connect,
             )
             await server.serve_forever(background=True)
@@ -254,7 +256,7 @@ class ModbusEmulator:
                 baudrate=baudrate,
                 parity=parity,
                 stopbits=stopbits,
-                trace_packet=self._trace_packet(0),  # type: ignore[arg-type]
+                trace_packet=self._trace_packet(0),
                 trace_connect=self._trace_connect,
             )
             await server.serve_forever(background=True)
