@@ -132,7 +132,7 @@ def test_a_missing_gauge_fails_after_showing_the_axes(
     assert probe("--config", str(path)) == 1
     out, err = capsys.readouterr()
     assert "switch on disabled" in out
-    assert err.startswith("stave probe: gauge: cannot open /dev/no-such-gauge: ")
+    assert err == "stave probe: gauge: cannot open /dev/no-such-gauge: No such file or directory\n"
     assert err.count("\n") == 1
 
 

@@ -18,6 +18,7 @@ silent: no line within ``reply_timeout_ms`` after a request is CommunicationErro
 from __future__ import annotations
 
 import contextlib
+import os
 import time
 from collections.abc import Callable
 from typing import NoReturn
@@ -216,8 +217,12 @@ class SerialWidthGauge(WidthGauge):
 
 
 def _reason(exc: BaseException) -> str:
-    text = getattr(exc, "strerror", None) or str(exc)
-    return str(text)
+    """The operating system's reason when there is one ("No such file or directory"),
+    without pyserial's repetition of the port name."""
+    number = getattr(exc, "errno", None)
+    if isinstance(number, int) and number > 0:
+        return os.strerror(number)
+    return str(exc)
 
 
 def create_gauge(config: MachineConfig, backend: MachineBackend) -> WidthGauge:
