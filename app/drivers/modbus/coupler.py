@@ -81,7 +81,8 @@ class ModbusIO(DigitalIO):
         self._state = LifecycleState.ACTIVE
 
     def deactivate(self) -> None:
-        """Every output off; INACTIVE even when the link is gone (see the motion side)."""
+        """Every output off and INACTIVE; ERROR without a write when the link is lost (the
+        coupler's watchdog switches its outputs off then)."""
         if self._state is not LifecycleState.ACTIVE:
             return
         if self._bus.stale(self._generation):

@@ -168,8 +168,10 @@ class ModbusMotion(MotionBackend):
         self._state = LifecycleState.ACTIVE
 
     def deactivate(self) -> None:
-        """Disable every drive (one write each); the state becomes INACTIVE even when the
-        link is gone (then the write raises CommunicationError after the state change)."""
+        """Disable every drive (one write each) and become INACTIVE. With the link lost the
+        state is ERROR and nothing is written (nothing can be: the drives' own Modbus
+        watchdog and the hard-wired stop chain act then); a write that fails here raises
+        CommunicationError after the state change."""
         if self._state is not LifecycleState.ACTIVE:
             return
         for axis in self._axes.values():
