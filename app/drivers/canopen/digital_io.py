@@ -21,6 +21,7 @@ from app.drivers.canopen import objects as obj
 from app.drivers.canopen.bus import CanopenBus
 from app.drivers.canopen.device import CanopenDevice
 from app.drivers.canopen.pdo import (
+    answered_sync,
     disable_pdo,
     download_layout,
     io_rpdo1,
@@ -75,7 +76,7 @@ class CanopenIO(CanopenDevice, DigitalIO):
                 f"{self._io.input_bytes}: the node's PDO mapping differs"
             )
             return
-        self._input_seq = seq
+        self._input_seq = answered_sync(self._input_seq if self._input_seq >= 0 else None, seq)
 
     def _configure_node(self, node_id: int) -> None:
         def write(index: int, sub: int, data: bytes) -> None:

@@ -33,6 +33,7 @@ from app.drivers.canopen.device import CanopenDevice
 from app.drivers.canopen.pdo import (
     DRIVE_RPDO1,
     DRIVE_TPDO1,
+    answered_sync,
     disable_pdo,
     download_layout,
     drive_tpdo2,
@@ -93,6 +94,7 @@ class _Axis:
                 f"{DRIVE_TPDO1.data_bytes}: the drive's PDO mapping differs"
             )
             return
+        seq = answered_sync(self.sample.seq if self.sample else None, seq)
         if self.sample is not None and self.sample.seq != seq:
             self.previous = self.sample
         self.sample = _Sample(statusword, position, mode, seq)

@@ -151,6 +151,21 @@ def unpack_drive_slow(data: bytes) -> tuple[int, int]:
     return int(inputs), int(code)
 
 
+def answered_sync(previous: int | None, current: int) -> int:
+    """The number of the SYNC a cyclic TPDO (transmission type 1) answers.
+
+    A node answers every SYNC once, in order, so an answer belongs to the oldest SYNC it has
+    not answered yet: ``previous + 1``. That is the SYNC sent last (``current``) when the
+    answer is on time, and the one before when the answer comes after the next SYNC went out
+    (a starved receive thread, a late drive). Stamping by arrival alone would then pair the
+    position with the wrong target, a false following error of one period of travel. The
+    result is kept within [current - 1, current], so a SYNC a node never answered shifts the
+    pairing by at most one period instead of for ever."""
+    if previous is None:
+        return current
+    return min(current, max(previous + 1, current - 1))
+
+
 def pack_bits(value: int, nbytes: int) -> bytes:
     return value.to_bytes(nbytes, "little")
 

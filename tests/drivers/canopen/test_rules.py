@@ -19,7 +19,7 @@ from app.drivers.canopen.cia402 import (
 )
 from app.drivers.canopen.emcy_codes import emcy_text
 from app.drivers.canopen.motion import _interpolation_period
-from app.drivers.canopen.pdo import pack_drive_command, unpack_drive_feedback
+from app.drivers.canopen.pdo import answered_sync, pack_drive_command, unpack_drive_feedback
 from app.drivers.canopen.settings import settings_from_config
 from app.drivers.canopen.watchdog import HeartbeatWatchdog
 from app.drivers.contracts import Cia402State
@@ -219,6 +219,15 @@ def test_pdo_packing():
     assert unpack_drive_feedback(pack_drive_command(0x0F, -123456, 8)) == (0x0F, -123456, 8)
     with pytest.raises(ValueError, match="INTEGER32"):
         pack_drive_command(0x0F, 2**31, 8)
+
+
+def test_which_sync_an_answer_belongs_to():
+    assert answered_sync(None, 7) == 7  # first answer
+    assert answered_sync(6, 7) == 7  # on time
+    assert answered_sync(6, 8) == 7  # late: SYNC 8 went out before the answer to 7 came
+    assert answered_sync(7, 8) == 8  # and the answer to 8 follows
+    assert answered_sync(3, 8) == 7  # a SYNC never answered: at most one period off
+    assert answered_sync(8, 8) == 8  # a second answer to the same SYNC (RTR) stays there
 
 
 @pytest.mark.parametrize(
