@@ -110,8 +110,15 @@ class Alarm:
         return f"{self.definition.text}: {self.detail}" if self.detail else self.definition.text
 
     def view(self) -> AlarmView:
-        return AlarmView(self.alarm_id, self.definition.code, self.text, self.source,
-                         self.state, self.raised_at, self.definition.severity.value)
+        return AlarmView(
+            self.alarm_id,
+            self.definition.code,
+            self.text,
+            self.source,
+            self.state,
+            self.raised_at,
+            self.definition.severity.value,
+        )
 
 
 @dataclass
@@ -131,8 +138,16 @@ class AlarmManager:
         target = ALARM_TRANSITIONS.get((alarm.state, action))
         if target is None:
             return
-        transition = AlarmTransition(alarm.alarm_id, alarm.definition.code, alarm.text,
-                                     alarm.source, alarm.state, target, self.wall_clock(), user)
+        transition = AlarmTransition(
+            alarm.alarm_id,
+            alarm.definition.code,
+            alarm.text,
+            alarm.source,
+            alarm.state,
+            target,
+            self.wall_clock(),
+            user,
+        )
         alarm.state = target
         self.history.append(transition)
         del self.history[: -self.history_limit]
@@ -146,8 +161,9 @@ class AlarmManager:
         key = (code, source)
         alarm = self._alarms.get(key)
         if alarm is None:
-            alarm = Alarm(next(self._ids), definition, source, detail, AlarmState.NORMAL,
-                          self.wall_clock())
+            alarm = Alarm(
+                next(self._ids), definition, source, detail, AlarmState.NORMAL, self.wall_clock()
+            )
             self._alarms[key] = alarm
         elif alarm.state is AlarmState.RTN_UNACKED:
             alarm.detail = detail or alarm.detail
@@ -174,7 +190,8 @@ class AlarmManager:
         changed = 0
         for alarm in list(self._alarms.values()):
             if alarm_id in (0, alarm.alarm_id) and alarm.state in (
-                AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED
+                AlarmState.ACTIVE_UNACKED,
+                AlarmState.RTN_UNACKED,
             ):
                 self._apply(alarm, AlarmAction.ACKNOWLEDGE, user)
                 changed += 1
@@ -182,14 +199,20 @@ class AlarmManager:
 
     def is_active(self, code: str, source: str = "") -> bool:
         alarm = self._alarms.get((code, source))
-        return alarm is not None and alarm.state in (AlarmState.ACTIVE_UNACKED,
-                                                     AlarmState.ACTIVE_ACKED)
+        return alarm is not None and alarm.state in (
+            AlarmState.ACTIVE_UNACKED,
+            AlarmState.ACTIVE_ACKED,
+        )
 
     def active_faults(self) -> list[Alarm]:
-        return [a for a in self._alarms.values()
-                if a.definition.severity is Severity.FAULT
-                and a.state in (AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_ACKED)]
+        return [
+            a
+            for a in self._alarms.values()
+            if a.definition.severity is Severity.FAULT
+            and a.state in (AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_ACKED)
+        ]
 
     def views(self) -> tuple[AlarmView, ...]:
-        return tuple(a.view() for a in sorted(self._alarms.values(),
-                                              key=lambda a: a.raised_at, reverse=True))
+        return tuple(
+            a.view() for a in sorted(self._alarms.values(), key=lambda a: a.raised_at, reverse=True)
+        )

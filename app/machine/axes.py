@@ -57,8 +57,10 @@ class AxisGroup:
         for name, fb in self.feedback.items():
             if fb.faulted:
                 continue
-            if not fb.enabled and (name not in self._enable_requested
-                                   or fb.power_state is Cia402State.SWITCH_ON_DISABLED):
+            if not fb.enabled and (
+                name not in self._enable_requested
+                or fb.power_state is Cia402State.SWITCH_ON_DISABLED
+            ):
                 self.motion.enable(name)
                 self._enable_requested.add(name)
         if self.all_enabled():
@@ -75,8 +77,11 @@ class AxisGroup:
     def disable_all(self) -> None:
         self._enable_requested.clear()
         for name, fb in self.feedback.items():
-            if fb.power_state not in (Cia402State.SWITCH_ON_DISABLED, Cia402State.FAULT,
-                                      Cia402State.FAULT_REACTION_ACTIVE):
+            if fb.power_state not in (
+                Cia402State.SWITCH_ON_DISABLED,
+                Cia402State.FAULT,
+                Cia402State.FAULT_REACTION_ACTIVE,
+            ):
                 self.motion.disable(name)
 
     def fault_reset_all(self) -> None:

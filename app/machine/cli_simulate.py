@@ -54,13 +54,14 @@ class Injection:
         what, _, step_name = text.partition("@")
         kind, _, target = what.partition(":")
         if kind not in FAULT_KINDS:
-            raise UsageError(f"--inject {text!r}: kind {kind!r} is not allowed: one of "
-                             + ", ".join(FAULT_KINDS))
-        if target and target not in ("X", "Y", "Z"):
-            raise UsageError(f"--inject {text!r}: axis {target!r} is not allowed: X, Y or Z")
+            raise UsageError(
+                f"--inject {text!r}: kind {kind!r} is not allowed: one of " + ", ".join(FAULT_KINDS)
+            )
         if step_name not in STEP_NAMES:
-            raise UsageError(f"--inject {text!r}: step {step_name!r} is not allowed: one of "
-                             + ", ".join(STEP_NAMES))
+            raise UsageError(
+                f"--inject {text!r}: step {step_name!r} is not allowed: one of "
+                + ", ".join(STEP_NAMES)
+            )
         return cls(kind, target, STEP_NAMES[step_name])
 
 
@@ -102,9 +103,18 @@ class Watch:
         if self.trace is not None:
             cmd_pos = c.axes.command
             x, y, z = c.axes.positions()
-            self.trace.writerow([f"{runtime.time_s:.4f}", c.state.value,
-                                 f"{cmd_pos['X']:.4f}", f"{cmd_pos['Y']:.4f}",
-                                 f"{cmd_pos['Z']:.4f}", f"{x:.4f}", f"{y:.4f}", f"{z:.4f}"])
+            self.trace.writerow(
+                [
+                    f"{runtime.time_s:.4f}",
+                    c.state.value,
+                    f"{cmd_pos['X']:.4f}",
+                    f"{cmd_pos['Y']:.4f}",
+                    f"{cmd_pos['Z']:.4f}",
+                    f"{x:.4f}",
+                    f"{y:.4f}",
+                    f"{z:.4f}",
+                ]
+            )
 
     def _watch_latched(self, c: MachineController) -> None:
         positions = c.axes.positions()
@@ -140,16 +150,30 @@ class CycleReport:
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--recipe", metavar="NAME", help="recipe name in the database")
-    source.add_argument("--recipe-file", type=Path, metavar="FILE",
-                        help="JSON recipe file (one recipe object or a list; the first is used)")
-    parser.add_argument("--width", type=float, required=True, metavar="MM",
-                        help="width of every board put in")
+    source.add_argument(
+        "--recipe-file",
+        type=Path,
+        metavar="FILE",
+        help="JSON recipe file (one recipe object or a list; the first is used)",
+    )
+    parser.add_argument(
+        "--width", type=float, required=True, metavar="MM", help="width of every board put in"
+    )
     parser.add_argument("--cycles", type=int, default=1, metavar="N")
-    parser.add_argument("--inject", metavar="KIND[:AXIS]@STEP",
-                        help="inject a fault when the cycle reaches STEP ("
-                        + ", ".join(STEP_NAMES) + ")")
-    parser.add_argument("--trace", type=Path, metavar="FILE.csv",
-                        help="write commanded and actual positions at every period")
+    parser.add_argument(
+        "--inject",
+        metavar="KIND[:TARGET]@STEP",
+        help="inject a fault when the cycle reaches STEP; KIND is one of "
+        + ", ".join(FAULT_KINDS)
+        + "; TARGET an axis (X, Y, Z) or the "
+        "simulation's target (e.g. clamp_sensor:open); STEP one of " + ", ".join(STEP_NAMES),
+    )
+    parser.add_argument(
+        "--trace",
+        type=Path,
+        metavar="FILE.csv",
+        help="write commanded and actual positions at every period",
+    )
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--realtime", action="store_true", help="run at real-time speed")
     parser.add_argument("--config", type=Path, help="machine configuration (TOML)")
@@ -190,8 +214,10 @@ def _home(runtime: MachineRuntime) -> None:
     if c.state is MachineState.READY:
         return
     c.post(cmd.Home())
-    if not runtime.run_until(lambda m: m.state is not MachineState.HOMING
-                             and m.state is not MachineState.NOT_HOMED, HOMING_TIMEOUT_S):
+    if not runtime.run_until(
+        lambda m: m.state is not MachineState.HOMING and m.state is not MachineState.NOT_HOMED,
+        HOMING_TIMEOUT_S,
+    ):
         raise RuntimeError("homing did not finish")
     if c.state is not MachineState.READY:
         raise RuntimeError(f"homing ended in {c.state.value}: {c.state_text()}")
@@ -216,12 +242,14 @@ def _tick_pacing(runtime: MachineRuntime, realtime: bool) -> Iterator[None]:
         runtime.on_tick.remove(pace)
 
 
-def _run_cycle(runtime: MachineRuntime, width_mm: float, injection: Injection | None,
-               watch: Watch) -> CycleReport:
+def _run_cycle(
+    runtime: MachineRuntime, width_mm: float, injection: Injection | None, watch: Watch
+) -> CycleReport:
     c = runtime.controller
     world = _sim_world(runtime)
     report = CycleReport(width_mm)
     world.remove_board()
+    runtime.run_for(0.1)  # the part sensor must see the finished board gone
     world.load_board(width_mm)
     runtime.run_for(0.1)
     alarms_before = {a.alarm_id for a in c.alarms.views()}
@@ -230,14 +258,22 @@ def _run_cycle(runtime: MachineRuntime, width_mm: float, injection: Injection | 
 
     def finished(m: MachineController) -> bool:
         nonlocal injected
-        if injection is not None and not injected and m.cycle is not None \
-                and m.cycle.step is injection.step:
+        if (
+            injection is not None
+            and not injected
+            and m.cycle is not None
+            and m.cycle.step is injection.step
+        ):
             faults = runtime.backend.extras.get("faults")
             if isinstance(faults, FaultInjector):
-                faults.inject(injection.kind, injection.target)
+                try:
+                    faults.inject(injection.kind, injection.target)
+                except ValueError as exc:
+                    raise UsageError(f"--inject: {exc}") from exc
             injected = True
-        return m.state in LATCHED_STATES or (m.state is MachineState.READY and m.cycle is None
-                                             and runtime.periods > 2)
+        return m.state in LATCHED_STATES or (
+            m.state is MachineState.READY and m.cycle is None and runtime.periods > 2
+        )
 
     runtime.run_for(2 * runtime.period_s)
     if not runtime.run_until(finished, CYCLE_TIMEOUT_S):
@@ -260,8 +296,9 @@ def _run_cycle(runtime: MachineRuntime, width_mm: float, injection: Injection | 
     return report
 
 
-def simulate(args: argparse.Namespace, config: MachineConfig, db_path: Path,
-             out: TextIO) -> dict[str, Any]:
+def simulate(
+    args: argparse.Namespace, config: MachineConfig, db_path: Path, out: TextIO
+) -> dict[str, Any]:
     injection = Injection.parse(args.inject) if args.inject else None
     if not math.isfinite(args.width):
         raise UsageError(f"--width {args.width} is not allowed: a finite number of mm")
@@ -273,8 +310,9 @@ def simulate(args: argparse.Namespace, config: MachineConfig, db_path: Path,
     try:
         if trace_file is not None:
             watch.trace = csv.writer(trace_file)
-            watch.trace.writerow(["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act",
-                                  "z_act"])
+            watch.trace.writerow(
+                ["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act", "z_act"]
+            )
         runtime.on_tick.append(watch.observe)
         runtime.start()
         recipe = _recipe_from_args(args, runtime.controller)
@@ -293,8 +331,7 @@ def simulate(args: argparse.Namespace, config: MachineConfig, db_path: Path,
         c = runtime.controller
         params = c.params
         limits = motion_limits(c.config, params)
-        tilt = (c.finished_cycles[-1][1].outcome.tilt_deg if c.finished_cycles
-                else recipe.tilt_deg)
+        tilt = c.finished_cycles[-1][1].outcome.tilt_deg if c.finished_cycles else recipe.tilt_deg
         result = {
             "pieces": c.pieces_total,
             "final_state": c.state.value,
@@ -336,9 +373,11 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
 def _describe(r: CycleReport) -> str:
     if r.result != "ok":
         return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms) or '(none)'}"
-    return (f"width {r.width_mm:.2f} mm: D {r.D_mm:.4f} mm, R {r.R_mm:.2f} mm, "
-            f"cycle {r.cycle_time_s:.2f} s (cut A {r.cut_time_s['A']:.2f} s, "
-            f"B {r.cut_time_s['B']:.2f} s), max contour error {r.max_contour_error_mm:.4f} mm")
+    return (
+        f"width {r.width_mm:.2f} mm: D {r.D_mm:.4f} mm, R {r.R_mm:.2f} mm, "
+        f"cycle {r.cycle_time_s:.2f} s (cut A {r.cut_time_s['A']:.2f} s, "
+        f"B {r.cut_time_s['B']:.2f} s), max contour error {r.max_contour_error_mm:.4f} mm"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -353,6 +392,8 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(result, indent=2))
     else:
-        print(f"pieces {result['pieces']}, final state {result['final_state']}, "
-              f"restarted {str(result['restarted']).lower()}")
+        print(
+            f"pieces {result['pieces']}, final state {result['final_state']}, "
+            f"restarted {str(result['restarted']).lower()}"
+        )
     return 0

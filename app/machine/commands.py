@@ -148,10 +148,28 @@ class Shutdown:
 
 
 Command = (
-    Start | Stop | Reset | Home | SelectRecipe | EnterManual | LeaveManual | JogContinuous
-    | JogStep | JogRelease | SetJogSpeed | SetClamps | SetSpindle | SetFeedOverride
-    | Acknowledge | ReloadParameters | ResetShiftCounter | InjectFault | ClearFaults
-    | LoadBoard | SetUser | Shutdown
+    Start
+    | Stop
+    | Reset
+    | Home
+    | SelectRecipe
+    | EnterManual
+    | LeaveManual
+    | JogContinuous
+    | JogStep
+    | JogRelease
+    | SetJogSpeed
+    | SetClamps
+    | SetSpindle
+    | SetFeedOverride
+    | Acknowledge
+    | ReloadParameters
+    | ResetShiftCounter
+    | InjectFault
+    | ClearFaults
+    | LoadBoard
+    | SetUser
+    | Shutdown
 )
 
 JOG_REFRESH_S = 0.1  # the screen repeats JogContinuous at least this often

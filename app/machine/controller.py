@@ -123,7 +123,9 @@ class MachineController:
         self._previous_inputs = InputImage()
         self._last_stop_s = -1e9
         self._reset_pending_since: float | None = None
+        self._reset_faults_sent = False
         self._comms_ok = True
+        self._gauge_lost = False
         self._plans: dict[int, PlanPreview] = {}
         self._plan_id = 0
         self._seq = 0
@@ -179,8 +181,14 @@ class MachineController:
         self._commands.append(command)
 
     def facts(self) -> Facts:
-        return Facts(self.state, self.axes.all_homed(), self.recipe is not None, self.inputs,
-                     self.cycle is not None, "faults" in self.backend.extras)
+        return Facts(
+            self.state,
+            self.axes.all_homed(),
+            self.recipe is not None,
+            self.inputs,
+            self.cycle is not None,
+            "faults" in self.backend.extras,
+        )
 
     def _refuse(self, reason: str) -> None:
         self.message = reason
@@ -208,11 +216,16 @@ class MachineController:
         def plan_job(width_mm: float, start: tuple[float, float, float]) -> PlannedStave:
             return plan_board(recipe, width_mm, params, limits_stave, limits_motion, start)
 
-        self.cycle = AutomaticCycle(recipe=recipe, config=self.config, gauge=self.gauge,
-                                    plan_job=plan_job, submit=self._submit,
-                                    started_s=self.now_s,
-                                    feed_override_pct=self.feed_override_pct,
-                                    board_already_cut=self._finished_board_on_table)
+        self.cycle = AutomaticCycle(
+            recipe=recipe,
+            config=self.config,
+            gauge=self.gauge,
+            plan_job=plan_job,
+            submit=self._submit,
+            started_s=self.now_s,
+            feed_override_pct=self.feed_override_pct,
+            board_already_cut=self._finished_board_on_table,
+        )
         self.message = ""
         self._transition(Event.START)
 
@@ -234,10 +247,12 @@ class MachineController:
         self._transition(Event.STOP)
 
     def _on_Reset(self, _c: cmd.Reset) -> None:
-        self.axes.fault_reset_all()
-        if not self._comms_ok:
+        """Reconnect a lost link, then (next period, on fresh feedback) fault-reset the
+        drives; the state unlatches once every cause is gone (see _check_reset)."""
+        if not self._comms_ok or self._gauge_lost:
             self._reconnect()
         self._reset_pending_since = self.now_s
+        self._reset_faults_sent = False
 
     def _on_Home(self, c: cmd.Home) -> None:
         self.homing = HomingSequence.for_axes(c.axis, self.config.axes, self.now_s)
@@ -307,7 +322,10 @@ class MachineController:
     def _on_InjectFault(self, c: cmd.InjectFault) -> None:
         injector = self.backend.extras.get("faults")
         if isinstance(injector, FaultInjector):
-            injector.inject(c.kind, c.target)
+            try:
+                injector.inject(c.kind, c.target)
+            except ValueError as exc:
+                self._refuse(str(exc))
 
     def _on_ClearFaults(self, _c: cmd.ClearFaults) -> None:
         injector = self.backend.extras.get("faults")
@@ -352,6 +370,8 @@ class MachineController:
         """Raise a fault alarm, stop at once and latch ERROR (IEC 60204-1 stop category 1:
         the drives quick-stop, then lose power)."""
         self.alarms.raise_alarm(code, source, detail)
+        if code == "E033":
+            self._gauge_lost = True  # Reset brings the gauge up again
         if self.state in LATCHED_STATES:
             return
         log.warning("fault %s %s: %s", code, source, detail)
@@ -418,10 +438,14 @@ class MachineController:
         self.axes.update(feedback)
         for device in (*self.backend.devices(), self.gauge):
             for event in device.events():
-                self._device_event(event)
+                self._device_event(event, from_gauge=device is self.gauge)
 
-    def _device_event(self, event: DeviceEvent) -> None:
+    def _device_event(self, event: DeviceEvent, from_gauge: bool = False) -> None:
         if event.kind in (DeviceEventKind.COMMUNICATION_LOST, DeviceEventKind.RECEIVE_THREAD_DIED):
+            if from_gauge:
+                # The axes and I/O still answer; only a new measurement is impossible.
+                self._fault("E033", "gauge", event.text or event.kind.value)
+                return
             self._comms_ok = False
             self._fault("E020", event.device, event.text or event.kind.value)
         elif event.kind is DeviceEventKind.EMERGENCY and event.code:
@@ -436,13 +460,16 @@ class MachineController:
 
     def _reconnect(self) -> None:
         """Operator's Reset after a lost link: bring the devices up again (disabled)."""
+        devices = [*self.backend.devices(), self.gauge] if not self._comms_ok else [self.gauge]
         try:
-            for device in (*self.backend.devices(), self.gauge):
-                device.deactivate()
-            for device in (*self.backend.devices(), self.gauge):
-                device.configure()
+            for device in devices:
+                if device.lifecycle_state is LifecycleState.ACTIVE:
+                    device.deactivate()
+                if device.lifecycle_state in (LifecycleState.UNCONFIGURED, LifecycleState.ERROR):
+                    device.configure()
                 device.activate()
             self._comms_ok = True
+            self._gauge_lost = False
         except DriverError as exc:
             self._refuse(f"reconnection failed: {exc}")
 
@@ -475,15 +502,21 @@ class MachineController:
         else:
             self.alarms.clear("E001", "E-stop chain")
         moving = self.state in (MachineState.AUTOMATIC, MachineState.HOMING)
-        if not inputs.guard_closed and moving and (self.cycle is None or self.cycle.moving
-                                                   or self.homing is not None):
+        if (
+            not inputs.guard_closed
+            and moving
+            and (self.cycle is None or self.cycle.moving or self.homing is not None)
+        ):
             self._fault("E002", "guard", "guard opened")
         elif inputs.guard_closed:
             self.alarms.clear("E002", "guard")
         for name, fb in self.axes.feedback.items():
             if fb.faulted:
-                code = "E012" if (fb.limit_positive or fb.limit_negative) else (
-                    "E011" if fb.fault_code == FOLLOWING_ERROR_FAULT else "E010")
+                code = (
+                    "E012"
+                    if (fb.limit_positive or fb.limit_negative)
+                    else ("E011" if fb.fault_code == FOLLOWING_ERROR_FAULT else "E010")
+                )
                 text = EMERGENCY_TEXTS.get(fb.fault_code, "")
                 self._fault(code, name, f"fault code 0x{fb.fault_code:04X} {text}".strip())
             else:
@@ -503,8 +536,15 @@ class MachineController:
         if self.state not in LATCHED_STATES:
             self._reset_pending_since = None
             return
-        causes = [f"{n} still in fault 0x{fb.fault_code:04X}"
-                  for n, fb in self.axes.feedback.items() if fb.faulted]
+        if not self._reset_faults_sent:
+            self._reset_faults_sent = True
+            self._device_call(self.axes.fault_reset_all)
+            return
+        causes = [
+            f"{n} still in fault 0x{fb.fault_code:04X}"
+            for n, fb in self.axes.feedback.items()
+            if fb.faulted
+        ]
         if not self.inputs.estop_ok:
             causes.append("emergency stop still pressed")
         if not self._comms_ok:
@@ -584,19 +624,29 @@ class MachineController:
         self._finished_board_on_table = True
         self._transition(Event.CYCLE_DONE)
 
-    def _piece_record(self, cycle: AutomaticCycle, cycle_time_s: float, result: str,
-                      alarm: str | None) -> PieceRecord:
+    def _piece_record(
+        self, cycle: AutomaticCycle, cycle_time_s: float, result: str, alarm: str | None
+    ) -> PieceRecord:
         o = cycle.outcome
-        return PieceRecord(self._wall_clock(), cycle.recipe.id, cycle.recipe.name, o.width_mm,
-                           o.d_mm, o.r_mm, o.tilt_deg, cycle_time_s, result, alarm)
+        return PieceRecord(
+            self._wall_clock(),
+            cycle.recipe.id,
+            cycle.recipe.name,
+            o.width_mm,
+            o.d_mm,
+            o.r_mm,
+            o.tilt_deg,
+            cycle_time_s,
+            result,
+            alarm,
+        )
 
     def _record_abort(self, alarm_code: str) -> None:
         cycle = self.cycle
         if cycle is None or cycle.step.name == "WAIT_FOR_PART":
             return
         result = "rejected" if cycle.planned is None else "aborted"
-        piece = self._piece_record(cycle, self.now_s - cycle.started_s, result,
-                                   alarm_code or None)
+        piece = self._piece_record(cycle, self.now_s - cycle.started_s, result, alarm_code or None)
         self.store.record_piece(piece)
         self.finished_cycles.append((piece, cycle))
         del self.finished_cycles[:-10]
@@ -611,8 +661,8 @@ class MachineController:
         self.outputs = replace(
             self.outputs,
             lamp_green=running,
-            lamp_yellow=self.state in (MachineState.MANUAL, MachineState.STOPPING,
-                                       MachineState.NOT_HOMED),
+            lamp_yellow=self.state
+            in (MachineState.MANUAL, MachineState.STOPPING, MachineState.NOT_HOMED),
             lamp_red=self.state in LATCHED_STATES,
         )
 
@@ -632,11 +682,23 @@ class MachineController:
     def snapshot(self) -> MachineSnapshot:
         self._seq += 1
         axes = tuple(
-            AxisView(n, self.config.axes[n].unit, fb.position, self.axes.command.get(n, 0.0),
-                     fb.following_error, fb.homed, fb.enabled, fb.faulted, fb.fault_code,
-                     fb.homing_active, fb.limit_negative, fb.limit_positive,
-                     fb.power_state.value)
-            for n, fb in self.axes.feedback.items())
+            AxisView(
+                n,
+                self.config.axes[n].unit,
+                fb.position,
+                self.axes.command.get(n, 0.0),
+                fb.following_error,
+                fb.homed,
+                fb.enabled,
+                fb.faulted,
+                fb.fault_code,
+                fb.homing_active,
+                fb.limit_negative,
+                fb.limit_positive,
+                fb.power_state.value,
+            )
+            for n, fb in self.axes.feedback.items()
+        )
         cycle = self.cycle
         planned = cycle.planned if cycle is not None else None
         cycle_view = CycleView(
@@ -650,16 +712,31 @@ class MachineController:
         )
         recipe = self.recipe
         return MachineSnapshot(
-            seq=self._seq, machine_time_s=self.now_s, wall_time=self._wall_clock(),
-            state=self.state, mode=self.mode, state_text=self.state_text(),
-            backend=self.backend.name, axes=axes, inputs=self.inputs, outputs=self.outputs,
-            alarms=self.alarms.views(), recipe_id=recipe.id if recipe else None,
-            recipe_name=recipe.name if recipe else "", pieces_shift=self.pieces_shift,
-            pieces_total=self.pieces_total, last_width_mm=self.last_width_mm,
-            last_cycle_time_s=self.last_cycle_time_s, cycle=cycle_view,
-            feed_override_pct=self.feed_override_pct, plan_id=self._plan_id,
-            jog_xy=self.manual.speed("XY"), jog_z=self.manual.speed("Z"),
-            allowed=allowed_commands(self.facts()), message=self.message)
+            seq=self._seq,
+            machine_time_s=self.now_s,
+            wall_time=self._wall_clock(),
+            state=self.state,
+            mode=self.mode,
+            state_text=self.state_text(),
+            backend=self.backend.name,
+            axes=axes,
+            inputs=self.inputs,
+            outputs=self.outputs,
+            alarms=self.alarms.views(),
+            recipe_id=recipe.id if recipe else None,
+            recipe_name=recipe.name if recipe else "",
+            pieces_shift=self.pieces_shift,
+            pieces_total=self.pieces_total,
+            last_width_mm=self.last_width_mm,
+            last_cycle_time_s=self.last_cycle_time_s,
+            cycle=cycle_view,
+            feed_override_pct=self.feed_override_pct,
+            plan_id=self._plan_id,
+            jog_xy=self.manual.speed("XY"),
+            jog_z=self.manual.speed("Z"),
+            allowed=allowed_commands(self.facts()),
+            message=self.message,
+        )
 
     def plan_preview(self, plan_id: int) -> PlanPreview | None:
         return self._plans.get(plan_id)

@@ -117,8 +117,7 @@ class AutomaticCycle:
     def _waited(self, now_s: float) -> float:
         return now_s - self._step_started_s
 
-    def _wait_sensor(self, ok: bool, now_s: float, travel_s: float, code: str,
-                     what: str) -> bool:
+    def _wait_sensor(self, ok: bool, now_s: float, travel_s: float, code: str, what: str) -> bool:
         if ok:
             return True
         limit_s = travel_s + self._config.io.sensor_timeout_s
@@ -164,13 +163,17 @@ class AutomaticCycle:
             self._plan_future.cancel()
 
     # -- the sequence ----------------------------------------------------------------------
-    def tick(self, now_s: float, inputs: InputImage, outputs: OutputImage,
-             axes: AxisGroup) -> OutputImage:
+    def tick(
+        self, now_s: float, inputs: InputImage, outputs: OutputImage, axes: AxisGroup
+    ) -> OutputImage:
         """Advance the cycle by one period; returns the outputs to write."""
         io = self._config.io
         step = self.step
-        if step is not CycleStep.WAIT_FOR_PART and step is not CycleStep.UNCLAMPING \
-                and not inputs.part_present:
+        if (
+            step is not CycleStep.WAIT_FOR_PART
+            and step is not CycleStep.UNCLAMPING
+            and not inputs.part_present
+        ):
             raise CycleFault("E044", f"the part-present sensor went off while {step.value}")
 
         if step is CycleStep.WAIT_FOR_PART:
@@ -182,14 +185,20 @@ class AutomaticCycle:
                 self._go(CycleStep.CENTERING, now_s)
         elif step is CycleStep.CENTERING:
             outputs = replace(outputs, centering_extend=True)
-            if self._wait_sensor(inputs.centering_extended, now_s, io.centering_time_s,
-                                 "E041", "centering device extended"):
+            if self._wait_sensor(
+                inputs.centering_extended,
+                now_s,
+                io.centering_time_s,
+                "E041",
+                "centering device extended",
+            ):
                 outputs = replace(outputs, clamps_close=True)
                 self._go(CycleStep.CLAMPING, now_s)
         elif step is CycleStep.CLAMPING:
             outputs = replace(outputs, clamps_close=True)
-            if self._wait_sensor(inputs.clamps_closed, now_s, io.clamp_time_s, "E040",
-                                 "clamps closed"):
+            if self._wait_sensor(
+                inputs.clamps_closed, now_s, io.clamp_time_s, "E040", "clamps closed"
+            ):
                 outputs = replace(outputs, centering_extend=False)
                 self._request_width()
                 self._go(CycleStep.MEASURING, now_s)
@@ -197,19 +206,35 @@ class AutomaticCycle:
             outputs = self._measure(now_s, inputs, outputs, axes)
         elif step is CycleStep.STARTING_SPINDLE:
             outputs = replace(outputs, spindle_on=True)
-            if self._wait_sensor(inputs.spindle_running, now_s, io.spindle_runup_s, "E042",
-                                 "spindle running feedback"):
+            # The cutter passes where the centering device stood: it must be back first.
+            centered_out = self._wait_sensor(
+                inputs.centering_retracted,
+                now_s,
+                io.centering_time_s,
+                "E041",
+                "centering device retracted",
+            )
+            if centered_out and self._wait_sensor(
+                inputs.spindle_running,
+                now_s,
+                io.spindle_runup_s,
+                "E042",
+                "spindle running feedback",
+            ):
                 assert self.planned is not None
                 self.executor = PathExecutor(self.planned.plan, self._config.period_s)
                 self.executor.set_override(self._override_pct)
                 self._go(CycleStep.CUTTING_A, now_s)
-        elif step in (CycleStep.CUTTING_A, CycleStep.REPOSITIONING, CycleStep.CUTTING_B,
-                      CycleStep.RETURNING):
+        elif step in (
+            CycleStep.CUTTING_A,
+            CycleStep.REPOSITIONING,
+            CycleStep.CUTTING_B,
+            CycleStep.RETURNING,
+        ):
             outputs = self._cut(now_s, inputs, outputs, axes)
         elif step is CycleStep.UNCLAMPING:
             outputs = replace(outputs, clamps_close=False, spindle_on=False)
-            if self._wait_sensor(inputs.clamps_open, now_s, io.clamp_time_s, "E040",
-                                 "clamps open"):
+            if self._wait_sensor(inputs.clamps_open, now_s, io.clamp_time_s, "E040", "clamps open"):
                 self.finished = True
                 self._step_started_s = now_s
         return outputs
@@ -220,8 +245,9 @@ class AutomaticCycle:
         except CommunicationError as exc:
             raise CycleFault("E033", str(exc), "gauge") from exc
 
-    def _measure(self, now_s: float, inputs: InputImage, outputs: OutputImage,
-                 axes: AxisGroup) -> OutputImage:
+    def _measure(
+        self, now_s: float, inputs: InputImage, outputs: OutputImage, axes: AxisGroup
+    ) -> OutputImage:
         if self._plan_future is None:
             try:
                 reading = self._gauge.poll()
@@ -229,12 +255,12 @@ class AutomaticCycle:
                 raise CycleFault("E033", str(exc), "gauge") from exc
             if reading is None:
                 if self._waited(now_s) > GAUGE_TIMEOUT_S:
-                    raise CycleFault("E030", f"no reading within {GAUGE_TIMEOUT_S:.1f} s",
-                                     "gauge")
+                    raise CycleFault("E030", f"no reading within {GAUGE_TIMEOUT_S:.1f} s", "gauge")
                 return outputs
             if not reading.ok or reading.width_mm is None:
-                raise CycleFault("E031", f"{reading.error or 'no width'} (raw {reading.raw!r})",
-                                 "gauge")
+                raise CycleFault(
+                    "E031", f"{reading.error or 'no width'} (raw {reading.raw!r})", "gauge"
+                )
             width_mm = reading.width_mm
             self.outcome.width_mm = width_mm
             start = axes.positions()
@@ -258,8 +284,9 @@ class AutomaticCycle:
         self._go(CycleStep.STARTING_SPINDLE, now_s)
         return replace(outputs, spindle_on=True)
 
-    def _cut(self, now_s: float, inputs: InputImage, outputs: OutputImage,
-             axes: AxisGroup) -> OutputImage:
+    def _cut(
+        self, now_s: float, inputs: InputImage, outputs: OutputImage, axes: AxisGroup
+    ) -> OutputImage:
         executor = self.executor
         assert executor is not None
         out = executor.step()

@@ -59,14 +59,25 @@ def plan_board(
         tilt_deg = recipe_tilt_deg(recipe, width_mm)
     except (ValueError, ArithmeticError) as exc:
         raise PlanningError("E032", f"width {width_mm:.2f} mm: {exc}") from exc
-    errors = validate_stave(recipe.length_mm, width_mm, recipe.length_ratio.value,
-                            recipe.width_ratio.value, stave_limits,
-                            thickness_mm=recipe.thickness_mm, tilt_deg=tilt_deg)
+    errors = validate_stave(
+        recipe.length_mm,
+        width_mm,
+        recipe.length_ratio.value,
+        recipe.width_ratio.value,
+        stave_limits,
+        thickness_mm=recipe.thickness_mm,
+        tilt_deg=tilt_deg,
+    )
     if errors:
         raise PlanningError("E032", "; ".join(e.message for e in errors), tuple(errors))
     try:
-        profile = solve_profile(recipe.length_mm, width_mm, recipe.length_ratio.value,
-                                recipe.width_ratio.value, stave_limits)
+        profile = solve_profile(
+            recipe.length_mm,
+            width_mm,
+            recipe.length_ratio.value,
+            recipe.width_ratio.value,
+            stave_limits,
+        )
         toolpath = build_toolpath(profile, toolpath_params(params, tilt_deg))
     except GeometryError as exc:
         raise PlanningError("E032", str(exc), exc.errors) from exc

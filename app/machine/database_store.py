@@ -43,16 +43,29 @@ def _utc(epoch_s: float) -> datetime:
 
 def production_record(piece: PieceRecord) -> ProductionRecord:
     return ProductionRecord(
-        time=_utc(piece.time), recipe_id=piece.recipe_id, recipe_name=piece.recipe_name,
-        width_mm=piece.width_mm, d_mm=piece.d_mm, r_mm=piece.r_mm,
-        cycle_time_s=piece.cycle_time_s, result=PieceResult(piece.result),
-        alarm_code=piece.alarm_code, tilt_deg=piece.tilt_deg)
+        time=_utc(piece.time),
+        recipe_id=piece.recipe_id,
+        recipe_name=piece.recipe_name,
+        width_mm=piece.width_mm,
+        d_mm=piece.d_mm,
+        r_mm=piece.r_mm,
+        cycle_time_s=piece.cycle_time_s,
+        result=PieceResult(piece.result),
+        alarm_code=piece.alarm_code,
+        tilt_deg=piece.tilt_deg,
+    )
 
 
 def alarm_event(t: AlarmTransition) -> AlarmEvent:
-    return AlarmEvent(time=_utc(t.time), code=t.code, text=t.text, source=t.source or "machine",
-                      from_state=_ALARM_STATES[t.from_state], to_state=_ALARM_STATES[t.to_state],
-                      user_name=t.user or None)
+    return AlarmEvent(
+        time=_utc(t.time),
+        code=t.code,
+        text=t.text,
+        source=t.source or "machine",
+        from_state=_ALARM_STATES[t.from_state],
+        to_state=_ALARM_STATES[t.to_state],
+        user_name=t.user or None,
+    )
 
 
 def _service_user(db: Database) -> User:
@@ -124,8 +137,9 @@ class ThreadedStore(DatabaseStore):
     def __init__(self, db: Database) -> None:
         super().__init__(db)
         self._queue: queue.Queue[Callable[[DatabaseStore], None] | None] = queue.Queue()
-        self._thread = threading.Thread(target=self._run, args=(db.path,), name="db-writer",
-                                        daemon=True)
+        self._thread = threading.Thread(
+            target=self._run, args=(db.path,), name="db-writer", daemon=True
+        )
         self._thread.start()
 
     def _run(self, path: Path) -> None:

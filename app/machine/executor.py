@@ -151,7 +151,11 @@ class PathExecutor:
         dofs = planned.chunk.dofs
         position = self._current_dof_state()[0][0]
         span = dofs[0].end - dofs[0].start
-        fraction = 1.0 if span == 0.0 else min(max((position - dofs[0].start) / span, 0.0), 1.0)
+        if span == 0.0:  # a dwell: by time
+            duration = float(self._segment.duration)
+            fraction = 1.0 if duration <= 0.0 else min(self._t_local / duration, 1.0)
+        else:
+            fraction = min(max((position - dofs[0].start) / span, 0.0), 1.0)
         return (planned.t_start_s + fraction * planned.duration_s) / self._plan.duration_s
 
     @property
@@ -186,6 +190,8 @@ class PathExecutor:
         self._override_pct = percent
         if self._state not in (ExecutorState.RUNNING, ExecutorState.HOLDING):
             return
+        if self._state is ExecutorState.RUNNING and self._chunk.chunk.dwell_s > 0.0:
+            return  # a dwell is time, not feed: the next chunk starts at the new override
         state = self._current_dof_state()
         if percent < MIN_RUN_OVERRIDE_PCT:
             if self._state is ExecutorState.RUNNING:
@@ -218,7 +224,7 @@ class PathExecutor:
         self._elapsed_s += self._period_s
         self._t_local += self._period_s
         if self._state is ExecutorState.RUNNING:
-            while self._t_local >= self._segment.duration:
+            while self._state is ExecutorState.RUNNING and self._t_local >= self._segment.duration:
                 carry = self._t_local - self._segment.duration
                 if self._index + 1 >= len(self._plan.chunks):
                     self._state = ExecutorState.DONE
@@ -228,7 +234,8 @@ class PathExecutor:
                 self._index += 1
                 self._segment = self._segment_for_new_chunk()
                 self._t_local = carry
-        elif self._t_local >= self._segment.duration:  # holding or stopping: at rest now
+        if self._state is not ExecutorState.RUNNING and self._t_local >= self._segment.duration:
+            # holding or stopping: at rest now
             self._t_local = self._segment.duration
             if self._state is ExecutorState.STOPPING:
                 self._state = ExecutorState.STOPPED
@@ -251,7 +258,11 @@ class PathExecutor:
         planned = self._chunk
         if self._override_pct == 100.0:
             return planned.trajectory
-        return plan_to_end(planned.chunk, rest_state(planned.chunk), self._override_pct)
+        chunk = planned.chunk
+        if self._override_pct < MIN_RUN_OVERRIDE_PCT:  # held: wait at the chunk's start
+            self._state = ExecutorState.HOLDING
+            return plan_to_rest(chunk, rest_state(chunk))
+        return plan_to_end(chunk, rest_state(chunk), self._override_pct, chunk.dwell_s)
 
     def _output(self, state: DofState) -> ExecutorOutput:
         chunk = self._chunk.chunk
@@ -272,7 +283,7 @@ class PathExecutor:
                 cached = tuple(c.duration_s for c in self._plan.chunks)
             else:
                 cached = tuple(
-                    float(plan_to_end(c.chunk, rest_state(c.chunk), key).duration)
+                    float(plan_to_end(c.chunk, rest_state(c.chunk), key, c.chunk.dwell_s).duration)
                     for c in self._plan.chunks
                 )
             self._remaining_cache[key] = cached

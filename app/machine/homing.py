@@ -42,8 +42,7 @@ class HomingSequence:
     log: list[str] = field(default_factory=list)
 
     @classmethod
-    def for_axes(cls, axis: str, configs: Mapping[str, AxisConfig],
-                 now_s: float) -> HomingSequence:
+    def for_axes(cls, axis: str, configs: Mapping[str, AxisConfig], now_s: float) -> HomingSequence:
         order = [a for a in HOMING_ORDER if not axis or a == axis]
         return cls(order, configs, now_s, _phase_started_s=now_s)
 

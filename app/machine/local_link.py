@@ -26,8 +26,9 @@ class LocalMachineLink:
         self._latest: MachineSnapshot | None = None
 
     @classmethod
-    def create(cls, config: MachineConfig, db_path: Path,
-               advance_per_poll_s: float = 0.1) -> LocalMachineLink:
+    def create(
+        cls, config: MachineConfig, db_path: Path, advance_per_poll_s: float = 0.1
+    ) -> LocalMachineLink:
         runtime = MachineRuntime.create(config, db_path)
         runtime.start()
         return cls(runtime, advance_per_poll_s)

@@ -26,7 +26,8 @@ class ManualControl:
     def __init__(self, configs: Mapping[str, AxisConfig]) -> None:
         self._configs = configs
         self._joggers: dict[str, Jogger] = {
-            name: Jogger.from_axis_config(cfg, cfg.home_position) for name, cfg in configs.items()}
+            name: Jogger.from_axis_config(cfg, cfg.home_position) for name, cfg in configs.items()
+        }
         self._speeds: dict[str, tuple[float, float]] = {
             "XY": (configs["X"].jog_velocity, configs["X"].jog_acceleration),
             "Z": (configs["Z"].jog_velocity, configs["Z"].jog_acceleration),
@@ -42,11 +43,15 @@ class ManualControl:
         for name in GROUPS[group]:
             cfg = self._configs[name]
             if not 0 < velocity <= cfg.max_velocity:
-                return (f"jog speed {velocity:g} {cfg.unit}/s is not allowed: "
-                        f"above 0 and at most {cfg.max_velocity:g}")
+                return (
+                    f"jog speed {velocity:g} {cfg.unit}/s is not allowed: "
+                    f"above 0 and at most {cfg.max_velocity:g}"
+                )
             if not 0 < acceleration <= cfg.max_acceleration:
-                return (f"jog acceleration {acceleration:g} {cfg.unit}/s² is not allowed: "
-                        f"above 0 and at most {cfg.max_acceleration:g}")
+                return (
+                    f"jog acceleration {acceleration:g} {cfg.unit}/s² is not allowed: "
+                    f"above 0 and at most {cfg.max_acceleration:g}"
+                )
         self._speeds[group] = (velocity, acceleration)
         for name in GROUPS[group]:
             self._joggers[name].set_limits(velocity, acceleration)

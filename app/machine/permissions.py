@@ -1,4 +1,4 @@
-""""May I do this now?" for every operator command, as pure functions of the machine's state.
+""" "May I do this now?" for every operator command, as pure functions of the machine's state.
 
 Why here and pure (after QtPyVCP's machine_actions ``ok()`` rules): the screens enable and
 disable their buttons from this answer, and show the reason as the message; the controller
@@ -39,8 +39,11 @@ def may_start(f: Facts) -> str:
     if f.state is MachineState.AUTOMATIC:
         return "a cycle is already running"
     if f.state is not MachineState.READY or not f.all_homed:
-        return "axes are not homed: home the machine first" if not f.all_homed else \
-            f"not possible while {f.state.value}"
+        return (
+            "axes are not homed: home the machine first"
+            if not f.all_homed
+            else f"not possible while {f.state.value}"
+        )
     if not f.recipe_loaded:
         return "select a recipe first"
     if not f.inputs.guard_closed:
@@ -49,8 +52,12 @@ def may_start(f: Facts) -> str:
 
 
 def may_stop(f: Facts) -> str:
-    if f.state in (MachineState.AUTOMATIC, MachineState.HOMING, MachineState.STOPPING,
-                   MachineState.MANUAL):
+    if f.state in (
+        MachineState.AUTOMATIC,
+        MachineState.HOMING,
+        MachineState.STOPPING,
+        MachineState.MANUAL,
+    ):
         return ""
     return "nothing is moving"
 

@@ -42,21 +42,27 @@ def _try_realtime_priority() -> str:
         return "SCHED_OTHER"
 
 
-def machine_process_main(config: MachineConfig, db_path: str,
-                         commands: multiprocessing.queues.Queue[Any],
-                         snapshots: multiprocessing.queues.Queue[Any],
-                         plans: multiprocessing.queues.Queue[Any],
-                         parent_pid: int, realtime_priority: bool = True) -> None:
+def machine_process_main(
+    config: MachineConfig,
+    db_path: str,
+    commands: multiprocessing.queues.Queue[Any],
+    snapshots: multiprocessing.queues.Queue[Any],
+    plans: multiprocessing.queues.Queue[Any],
+    parent_pid: int,
+    realtime_priority: bool = True,
+) -> None:
     """Entry point of the machine process."""
     from app.logging_setup import setup_logging
     from app.machine.runtime import MachineRuntime
 
     setup_logging(config.log_dir, config.log_level, console=False, file_name="machine.log")
     policy = _try_realtime_priority() if realtime_priority else "SCHED_OTHER"
-    planner_pool = concurrent.futures.ThreadPoolExecutor(max_workers=1,
-                                                         thread_name_prefix="planner")
-    runtime = MachineRuntime.create(config, Path(db_path), threaded_store=True,
-                                    submit=planner_pool.submit)
+    planner_pool = concurrent.futures.ThreadPoolExecutor(
+        max_workers=1, thread_name_prefix="planner"
+    )
+    runtime = MachineRuntime.create(
+        config, Path(db_path), threaded_store=True, submit=planner_pool.submit
+    )
     log.info("machine process started (%s, period %.1f ms)", policy, config.period_s * 1e3)
     runtime.start()
     controller = runtime.controller
@@ -105,10 +111,13 @@ def machine_process_main(config: MachineConfig, db_path: str,
 
 
 class ProcessMachineLink:
-    def __init__(self, process: multiprocessing.process.BaseProcess,
-                 commands: multiprocessing.queues.Queue[Any],
-                 snapshots: multiprocessing.queues.Queue[Any],
-                 plans: multiprocessing.queues.Queue[Any]) -> None:
+    def __init__(
+        self,
+        process: multiprocessing.process.BaseProcess,
+        commands: multiprocessing.queues.Queue[Any],
+        snapshots: multiprocessing.queues.Queue[Any],
+        plans: multiprocessing.queues.Queue[Any],
+    ) -> None:
         self._process = process
         self._commands = commands
         self._snapshots = snapshots
@@ -118,17 +127,19 @@ class ProcessMachineLink:
         self.lateness: dict[str, float] = {}
 
     @classmethod
-    def start(cls, config: MachineConfig, db_path: Path,
-              realtime_priority: bool = True) -> ProcessMachineLink:
+    def start(
+        cls, config: MachineConfig, db_path: Path, realtime_priority: bool = True
+    ) -> ProcessMachineLink:
         context = multiprocessing.get_context("spawn")
         commands: multiprocessing.queues.Queue[Any] = context.Queue()
         snapshots: multiprocessing.queues.Queue[Any] = context.Queue(_SNAPSHOT_QUEUE_SIZE)
         plans: multiprocessing.queues.Queue[Any] = context.Queue()
         process = context.Process(
-            target=machine_process_main, name="machine",
-            args=(config, str(db_path), commands, snapshots, plans, os.getpid(),
-                  realtime_priority),
-            daemon=True)
+            target=machine_process_main,
+            name="machine",
+            args=(config, str(db_path), commands, snapshots, plans, os.getpid(), realtime_priority),
+            daemon=True,
+        )
         process.start()
         return cls(process, commands, snapshots, plans)
 

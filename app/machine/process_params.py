@@ -46,9 +46,14 @@ def toolpath_params(params: Mapping[str, float], tilt_deg: float) -> ToolPathPar
 def stave_limits(config: MachineConfig) -> StaveLimits:
     """The spec's stave limits plus this machine's axis travel."""
     x, y, z = config.axes["X"], config.axes["Y"], config.axes["Z"]
-    return StaveLimits(x_min_mm=x.min_position, x_max_mm=x.max_position,
-                       y_min_mm=y.min_position, y_max_mm=y.max_position,
-                       z_min_deg=z.min_position, z_max_deg=z.max_position)
+    return StaveLimits(
+        x_min_mm=x.min_position,
+        x_max_mm=x.max_position,
+        y_min_mm=y.min_position,
+        y_max_mm=y.max_position,
+        z_min_deg=z.min_position,
+        z_max_deg=z.max_position,
+    )
 
 
 def motion_limits(config: MachineConfig, params: Mapping[str, float]) -> MotionLimits:

@@ -56,26 +56,40 @@ class LatenessStats:
 
 
 class MachineRuntime:
-    def __init__(self, config: MachineConfig, store: MachineStore,
-                 backend: MachineBackend | None = None, gauge: WidthGauge | None = None,
-                 *, submit: PlanSubmitter = run_now,
-                 wall_clock: Callable[[], float] = time.time) -> None:
+    def __init__(
+        self,
+        config: MachineConfig,
+        store: MachineStore,
+        backend: MachineBackend | None = None,
+        gauge: WidthGauge | None = None,
+        *,
+        submit: PlanSubmitter = run_now,
+        wall_clock: Callable[[], float] = time.time,
+    ) -> None:
         self.config = config
         self.backend = backend if backend is not None else create_backend(config)
         self.gauge = gauge if gauge is not None else create_gauge(config, self.backend)
-        self.controller = MachineController(config, self.backend, self.gauge, store,
-                                            submit=submit, wall_clock=wall_clock)
+        self.controller = MachineController(
+            config, self.backend, self.gauge, store, submit=submit, wall_clock=wall_clock
+        )
         self.period_s = config.period_s
         self.time_s = 0.0
         self.periods = 0
-        self._time_driven = [d for d in (*self.backend.devices(), self.gauge)
-                             if isinstance(d, TimeDriven)]
+        self._time_driven = [
+            d for d in (*self.backend.devices(), self.gauge) if isinstance(d, TimeDriven)
+        ]
         self.lateness = LatenessStats()
         self.on_tick: list[Callable[[MachineRuntime], None]] = []
 
     @classmethod
-    def create(cls, config: MachineConfig, db_path: Path, *, threaded_store: bool = False,
-               submit: PlanSubmitter = run_now) -> MachineRuntime:
+    def create(
+        cls,
+        config: MachineConfig,
+        db_path: Path,
+        *,
+        threaded_store: bool = False,
+        submit: PlanSubmitter = run_now,
+    ) -> MachineRuntime:
         """A runtime on the configured backends, with the database at ``db_path``."""
         from app.machine.database_store import open_store
 
@@ -109,8 +123,9 @@ class MachineRuntime:
                 return True
         return False
 
-    def run_realtime(self, keep_running: Callable[[], bool],
-                     between: Callable[[], None] = lambda: None) -> None:
+    def run_realtime(
+        self, keep_running: Callable[[], bool], between: Callable[[], None] = lambda: None
+    ) -> None:
         """Real time: wait for each period's deadline, then tick; ``between`` runs after the
         tick (command intake, snapshot publishing) and must not block."""
         gc.collect()

@@ -114,5 +114,6 @@ class MachineSnapshot:
 
     @property
     def unacknowledged_alarms(self) -> int:
-        return sum(1 for a in self.alarms
-                   if a.state in (AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED))
+        return sum(
+            1 for a in self.alarms if a.state in (AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED)
+        )

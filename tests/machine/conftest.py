@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+
 from app.config import MachineConfig, load_config
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime
@@ -38,7 +39,8 @@ class Rig:
     def until(self, predicate, timeout_s: float = 120.0) -> None:  # type: ignore[no-untyped-def]
         assert self.runtime.run_until(predicate, timeout_s), (
             f"timed out in {self.state.value}: {self.controller.state_text()} "
-            f"({self.controller.message})")
+            f"({self.controller.message})"
+        )
 
     def home(self) -> None:
         self.send(cmd.Home())
@@ -51,14 +53,20 @@ class Rig:
 
     def load(self, width_mm: float = 150.0) -> None:
         self.world.remove_board()
+        self.run(0.05)
         self.world.load_board(width_mm)
         self.run(0.05)
 
     def positions(self) -> tuple[float, float, float]:
-        return self.controller.axes.positions()
+        """Where the axes physically are (the simulation's truth, not the controller's
+        possibly stale feedback: after a lost link the controller reads nothing)."""
+        p = self.world.axis_positions()
+        return (p["X"], p["Y"], p["Z"])
 
     def moving(self) -> bool:
-        return not self.controller.axes.standing_still(tolerance=1e-3)
+        before = self.positions()
+        self.run(0.1)
+        return self.positions() != pytest.approx(before, abs=1e-4)
 
 
 def make_rig(tmp_path: Path, config: MachineConfig | None = None) -> Rig:

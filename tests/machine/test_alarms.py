@@ -30,8 +30,11 @@ ACT = {
 }
 
 
-@pytest.mark.parametrize(("key", "target"), list(ALARM_TRANSITIONS.items()),
-                         ids=[f"{s.name}-{a.name}" for (s, a) in ALARM_TRANSITIONS])
+@pytest.mark.parametrize(
+    ("key", "target"),
+    list(ALARM_TRANSITIONS.items()),
+    ids=[f"{s.name}-{a.name}" for (s, a) in ALARM_TRANSITIONS],
+)
 def test_each_transition(key: tuple[AlarmState, AlarmAction], target: AlarmState) -> None:
     state, action = key
     manager, seen = make()
@@ -64,8 +67,11 @@ def test_full_history_and_one_line_per_source() -> None:
     manager.clear("E010", "X")
     manager.acknowledge(seen[0].alarm_id)  # the X alarm, returned to normal
     assert [t.to_state for t in manager.history] == [
-        AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED,
-        AlarmState.NORMAL]
+        AlarmState.ACTIVE_UNACKED,
+        AlarmState.ACTIVE_UNACKED,
+        AlarmState.RTN_UNACKED,
+        AlarmState.NORMAL,
+    ]
     assert "0x2310" in seen[0].text and seen[0].source == "X"
 
 

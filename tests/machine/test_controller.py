@@ -200,3 +200,18 @@ def test_width_out_of_range_is_refused_before_cutting(ready_rig: Rig) -> None:
     alarm = next(a for a in rig.controller.snapshot().alarms if a.code == "E032")
     assert "280" in alarm.text
     assert rig.controller.finished_cycles[-1][0].result == "rejected"
+
+
+def test_unplugged_gauge_is_reconnected_by_reset(ready_rig: Rig) -> None:
+    rig = ready_rig
+    rig.faults.inject("comms_loss", "gauge")
+    rig.send(cmd.Start())
+    rig.until(lambda c: c.state is MachineState.ERROR, 30.0)
+    assert any(a.code == "E033" for a in rig.controller.snapshot().alarms)
+    rig.faults.clear_injections()
+    rig.send(cmd.Reset(), run_s=0.5)
+    assert rig.state is MachineState.READY
+    rig.load(150.0)
+    rig.send(cmd.Start())
+    rig.until(lambda c: c.state is not MachineState.AUTOMATIC, 200.0)
+    assert rig.state is MachineState.READY and rig.controller.pieces_total == 1

@@ -168,7 +168,7 @@ def test_a_stop_while_cutting_at_the_feed_takes_exactly_the_braking_distance() -
     before = outputs[k_stop - 1]
     v = LIMITS.feed_mm_s
     assert math.hypot(before.vx, before.vy) == pytest.approx(v)
-    box = PLAN.chunks[1].chunk.s_dof
+    box = next(c.chunk.s_dof for c in PLAN.chunks if c.chunk.phase is Phase.CUT_A)
     assert box is not None
     # jerk-limited stop from cruise: v < A^2/J, so a = J t up then down, time 2 sqrt(v/J)
     assert v < box.acceleration**2 / box.jerk

@@ -30,7 +30,9 @@ def test_every_transition_row(key: tuple[MachineState, Event], target: object) -
 REFUSED = [(s, e) for s in MachineState for e in Event if (s, e) not in TRANSITIONS]
 
 
-@pytest.mark.parametrize(("state", "event"), REFUSED, ids=[f"{s.name}-{e.name}" for s, e in REFUSED])
+@pytest.mark.parametrize(
+    ("state", "event"), REFUSED, ids=[f"{s.name}-{e.name}" for s, e in REFUSED]
+)
 def test_every_refusal_has_a_reason(state: MachineState, event: Event) -> None:
     with pytest.raises(TransitionRefused) as info:
         next_state(state, event, all_homed=True)
@@ -40,15 +42,21 @@ def test_every_refusal_has_a_reason(state: MachineState, event: Event) -> None:
 
 def test_latched_states_are_left_only_by_reset() -> None:
     for state in LATCHED_STATES:
-        leaving = [e for (s, e), t in TRANSITIONS.items() if s is state
-                   and next_state(s, e, True) is not state]
+        leaving = [
+            e
+            for (s, e), t in TRANSITIONS.items()
+            if s is state and next_state(s, e, True) is not state
+        ]
         assert set(leaving) <= {Event.RESET, Event.ESTOP}
 
 
 def test_estop_and_fault_reach_from_every_state() -> None:
     for state in MachineState:
-        assert next_state(state, Event.ESTOP, True) is MachineState.EMERGENCY_STOP \
-            if state is not MachineState.EMERGENCY_STOP else True
+        assert (
+            next_state(state, Event.ESTOP, True) is MachineState.EMERGENCY_STOP
+            if state is not MachineState.EMERGENCY_STOP
+            else True
+        )
         if state not in LATCHED_STATES:
             assert next_state(state, Event.FAULT, True) is MachineState.ERROR
 

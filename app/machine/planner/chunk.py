@@ -137,6 +137,7 @@ class Chunk:
     z_end: float
     s_dof: Dof | None
     z_dof: Dof | None
+    dwell_s: float = 0.0  # > 0: a dwell at rest (nothing moves), e.g. settling before a cut
 
     @property
     def dofs(self) -> tuple[Dof, ...]:
@@ -216,6 +217,16 @@ def make_chunk(
     return Chunk(phase, path, xy, z_start, z_end, s_dof, z_dof)
 
 
+def make_dwell(
+    phase: Phase, xyz: tuple[float, float, float], z: AxisLimits, dwell_s: float
+) -> Chunk:
+    """A chunk that holds ``xyz`` for ``dwell_s`` seconds (its one DOF, Z, stays put)."""
+    if not (math.isfinite(dwell_s) and dwell_s > 0.0):
+        raise PlannerError(f"dwell_s = {dwell_s!r} is not allowed: a finite number > 0")
+    z_dof = Dof(xyz[2], xyz[2], z.velocity, z.velocity, z.acceleration, z.jerk)
+    return Chunk(phase, None, xyz[:2], xyz[2], xyz[2], None, z_dof, dwell_s)
+
+
 # -- ruckig ---------------------------------------------------------------------------------
 
 DofState = tuple[tuple[float, ...], tuple[float, ...], tuple[float, ...]]
@@ -261,9 +272,12 @@ def _calculate(inp: InputParameter, what: str) -> RuckigTrajectory:
     return trajectory
 
 
-def plan_to_end(chunk: Chunk, state: DofState, override_pct: float) -> RuckigTrajectory:
+def plan_to_end(
+    chunk: Chunk, state: DofState, override_pct: float, minimum_duration_s: float = 0.0
+) -> RuckigTrajectory:
     """Time-optimal jerk-limited s(t) (and z(t)) from ``state`` to the chunk's end at rest,
-    with the DOF velocity limits at ``override_pct`` (>= MIN_RUN_OVERRIDE_PCT)."""
+    with the DOF velocity limits at ``override_pct`` (>= MIN_RUN_OVERRIDE_PCT), lasting at
+    least ``minimum_duration_s`` (a dwell)."""
     if override_pct < MIN_RUN_OVERRIDE_PCT:
         raise PlannerError(
             f"override_pct = {override_pct}: planning to the end needs >= {MIN_RUN_OVERRIDE_PCT} %"
@@ -276,6 +290,8 @@ def plan_to_end(chunk: Chunk, state: DofState, override_pct: float) -> RuckigTra
     inp.target_position = [d.end for d in dofs]
     inp.target_velocity = [0.0] * len(dofs)
     inp.target_acceleration = [0.0] * len(dofs)
+    if minimum_duration_s > 0.0:
+        inp.minimum_duration = minimum_duration_s
     try:
         return _calculate(inp, f"{chunk.phase.value} move")
     except PlannerError:

@@ -24,7 +24,9 @@ class PlannedChunk:
     def __init__(self, chunk: Chunk, t_start_s: float) -> None:
         self.chunk = chunk
         self.t_start_s = t_start_s
-        self.trajectory: RuckigTrajectory = plan_to_end(chunk, rest_state(chunk), 100.0)
+        self.trajectory: RuckigTrajectory = plan_to_end(
+            chunk, rest_state(chunk), 100.0, chunk.dwell_s
+        )
 
     @property
     def duration_s(self) -> float:

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.machine.planner.point_to_point import plan_point_to_point
+from app.machine.planner.point_to_point import SAME_POSITION_MM, plan_point_to_point
 from app.machine.planner.trajectory import Phase, PlannerError
 
 from .support import LIMITS, PERIOD_S, assert_within_limits
@@ -21,7 +21,7 @@ positions = st.tuples(st.floats(-5.0, 3900.0), st.floats(-5.0, 800.0), st.floats
 @settings(max_examples=60, deadline=None)
 @given(positions, positions)
 def test_point_to_point_is_exact_synchronised_and_within_limits(start, target) -> None:
-    if max(abs(a - b) for a, b in zip(start, target, strict=True)) < 1e-6:
+    if max(abs(a - b) for a, b in zip(start, target, strict=True)) <= SAME_POSITION_MM:
         with pytest.raises(PlannerError):
             plan_point_to_point(start, target, LIMITS)
         return

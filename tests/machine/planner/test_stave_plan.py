@@ -203,3 +203,20 @@ def test_any_valid_stave_keeps_limits_and_path(stave_input, params) -> None:
         tilt = params.tilt_deg if side == "A" else -params.tilt_deg
         assert np.all(rows[inside, 3] == tilt)
     assert rows[-1, 1:] == pytest.approx(HOME, abs=1e-9)
+
+
+def test_the_axes_dwell_at_rest_at_each_lead_in_start() -> None:
+    result = plan()
+    for phase, side in ((Phase.CUT_A, "A"), (Phase.CUT_B, "B")):
+        interval = result.phase_interval(phase)
+        assert interval is not None
+        start = result.toolpath.side_segments(side)[0].start
+        for t in np.linspace(interval[0] - result.settle_s, interval[0], 11)[:-1]:
+            sample = result.sample(float(t))
+            assert sample.xyz[:2] == pytest.approx(start, abs=1e-12)
+            assert (sample.vx, sample.vy, sample.vz) == (0.0, 0.0, 0.0)
+            assert not sample.cutting
+    without = plan_stave(toolpath(), HOME, LIMITS, settle_s=0.0)
+    assert without.duration_s == pytest.approx(result.duration_s - 2 * result.settle_s)
+    with pytest.raises(PlannerError, match="settle_s = -1"):
+        plan_stave(toolpath(), HOME, LIMITS, settle_s=-1.0)
