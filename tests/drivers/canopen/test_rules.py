@@ -340,3 +340,18 @@ def test_the_shipped_sample_configuration_is_valid():
     settings = settings_from_config(config)
     assert settings.interface == "socketcan" and settings.bitrate == 1_000_000
     assert settings.bus_load().maximum < 0.30
+
+
+def test_the_sample_configuration_stays_in_step_with_machine_toml():
+    """Only the backend differs: axes, I/O timings and process values are the shipped ones."""
+    from app.config import load_config
+    from app.resources import resource_path
+
+    sample = load_config(resource_path("machine-canopen.toml"))
+    shipped = load_config(resource_path("machine.toml"))
+    assert sample.axes == shipped.axes
+    assert (sample.io, sample.process, sample.period_s) == (
+        shipped.io,
+        shipped.process,
+        shipped.period_s,
+    )
