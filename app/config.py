@@ -37,7 +37,7 @@ class ConfigError(ValueError):
         self.allowed = allowed
 
 
-class _Section:
+class Section:
     """Reads one TOML table, checking types and ranges and refusing unknown keys."""
 
     def __init__(self, data: object, path: str, source: str) -> None:
@@ -100,9 +100,9 @@ class _Section:
             raise self.error(name, value, allowed)
         return value
 
-    def table(self, name: str) -> _Section:
+    def table(self, name: str) -> Section:
         self._used.add(name)
-        return _Section(self._data.get(name, {}), self._key(name), self._source)
+        return Section(self._data.get(name, {}), self._key(name), self._source)
 
     def raw_table(self, name: str) -> dict[str, Any]:
         """A table handed over unchecked to the module that owns it (a backend's settings)."""
@@ -115,12 +115,18 @@ class _Section:
     def keys(self) -> list[str]:
         return list(self._data.keys())
 
+    def __contains__(self, name: object) -> bool:
+        return name in self._data
+
     def finish(self) -> None:
         """Refuse keys nobody read: a misspelt key must not silently fall back to a default."""
         unknown = sorted(set(self._data) - self._used)
         if unknown:
-            raise self.error(unknown[0], self._data[unknown[0]], f"a known key of [{self._path}]"
-                             if self._path else "a known top-level table")
+            raise self.error(
+                unknown[0],
+                self._data[unknown[0]],
+                f"a known key of [{self._path}]" if self._path else "a known top-level table",
+            )
 
 
 @dataclass(frozen=True)
@@ -194,16 +200,43 @@ class MachineConfig:
 
 
 _AXIS_DEFAULTS: dict[str, dict[str, Any]] = {
-    "X": {"unit": "mm", "min": -5.0, "max": 3900.0, "vmax": 400.0, "amax": 2000.0,
-          "jmax": 20000.0, "home": 0.0, "dir": -1, "fe": 2.0},
-    "Y": {"unit": "mm", "min": -5.0, "max": 800.0, "vmax": 300.0, "amax": 2000.0,
-          "jmax": 20000.0, "home": 0.0, "dir": -1, "fe": 2.0},
-    "Z": {"unit": "deg", "min": -15.0, "max": 15.0, "vmax": 30.0, "amax": 150.0,
-          "jmax": 1500.0, "home": 0.0, "dir": -1, "fe": 0.5},
+    "X": {
+        "unit": "mm",
+        "min": -5.0,
+        "max": 3900.0,
+        "vmax": 400.0,
+        "amax": 2000.0,
+        "jmax": 20000.0,
+        "home": 0.0,
+        "dir": -1,
+        "fe": 2.0,
+    },
+    "Y": {
+        "unit": "mm",
+        "min": -5.0,
+        "max": 800.0,
+        "vmax": 300.0,
+        "amax": 2000.0,
+        "jmax": 20000.0,
+        "home": 0.0,
+        "dir": -1,
+        "fe": 2.0,
+    },
+    "Z": {
+        "unit": "deg",
+        "min": -15.0,
+        "max": 15.0,
+        "vmax": 30.0,
+        "amax": 150.0,
+        "jmax": 1500.0,
+        "home": 0.0,
+        "dir": -1,
+        "fe": 0.5,
+    },
 }
 
 
-def _read_axis(section: _Section, name: str) -> AxisConfig:
+def _read_axis(section: Section, name: str) -> AxisConfig:
     d = _AXIS_DEFAULTS[name]
     unit = section.text("unit", d["unit"], (d["unit"],))
     lo = section.number("min_position", d["min"])
@@ -225,8 +258,24 @@ def _read_axis(section: _Section, name: str) -> AxisConfig:
     fe = section.number("following_error_limit", d["fe"], 0.0, 100.0, exclusive_minimum=True)
     margin = section.number("limit_switch_margin", 5.0, 0.0, 100.0)
     section.finish()
-    return AxisConfig(name, unit, lo, hi, vmax, amax, jmax, jog_v, jog_a, home, switch,
-                      direction, homing_v, absolute, fe, margin)
+    return AxisConfig(
+        name,
+        unit,
+        lo,
+        hi,
+        vmax,
+        amax,
+        jmax,
+        jog_v,
+        jog_a,
+        home,
+        switch,
+        direction,
+        homing_v,
+        absolute,
+        fe,
+        margin,
+    )
 
 
 BACKENDS_KNOWN = ("sim", "modbus", "canopen")
@@ -235,17 +284,17 @@ GAUGES_KNOWN = ("sim", "serial")
 
 def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     """Build a MachineConfig from parsed TOML, raising ConfigError on the first bad value."""
-    root = _Section(data, "", source)
+    root = Section(data, "", source)
 
     backend = root.table("backend")
     backend_name = backend.text("name", "sim", BACKENDS_KNOWN)
     period_ms = backend.number("period_ms", 4.0, 1.0, 50.0)
-    backend_settings = {n: backend.raw_table(n) for n in BACKENDS_KNOWN if n in backend.keys()}
+    backend_settings = {n: backend.raw_table(n) for n in BACKENDS_KNOWN if n in backend}
     backend.finish()
 
     gauge = root.table("gauge")
     gauge_name = gauge.text("name", "sim", GAUGES_KNOWN)
-    gauge_settings = {n: gauge.raw_table(n) for n in GAUGES_KNOWN if n in gauge.keys()}
+    gauge_settings = {n: gauge.raw_table(n) for n in GAUGES_KNOWN if n in gauge}
     gauge.finish()
 
     axes_section = root.table("axes")
@@ -273,9 +322,12 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     )
     proc.finish()
     if process.lead_mm <= process.tool_radius_mm:
-        raise ConfigError("process.lead_mm", process.lead_mm,
-                          f"greater than process.tool_radius_mm ({process.tool_radius_mm:g})",
-                          source)
+        raise ConfigError(
+            "process.lead_mm",
+            process.lead_mm,
+            f"greater than process.tool_radius_mm ({process.tool_radius_mm:g})",
+            source,
+        )
 
     db = root.table("database")
     database_path = db.text("path", "")
@@ -291,9 +343,21 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     ui.finish()
 
     root.finish()
-    return MachineConfig(source, backend_name, backend_settings, gauge_name, gauge_settings,
-                         period_ms / 1000.0, axes, io_config, process, database_path, log_dir,
-                         log_level, language)
+    return MachineConfig(
+        source,
+        backend_name,
+        backend_settings,
+        gauge_name,
+        gauge_settings,
+        period_ms / 1000.0,
+        axes,
+        io_config,
+        process,
+        database_path,
+        log_dir,
+        log_level,
+        language,
+    )
 
 
 def default_config_path() -> Path:

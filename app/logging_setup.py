@@ -20,8 +20,9 @@ def default_log_dir() -> Path:
     return Path(user_log_dir(APP_NAME, appauthor=False))
 
 
-def setup_logging(log_dir: str = "", level: str = "INFO", console: bool = True,
-                  file_name: str = "stave.log") -> Path:
+def setup_logging(
+    log_dir: str = "", level: str = "INFO", console: bool = True, file_name: str = "stave.log"
+) -> Path:
     """Configure the root logger; returns the log file path. Safe to call more than once."""
     directory = Path(log_dir) if log_dir else default_log_dir()
     directory.mkdir(parents=True, exist_ok=True)
@@ -32,7 +33,8 @@ def setup_logging(log_dir: str = "", level: str = "INFO", console: bool = True,
             root.removeHandler(handler)
             handler.close()
     file_handler = logging.handlers.RotatingFileHandler(
-        log_file, maxBytes=2_000_000, backupCount=5, encoding="utf-8")
+        log_file, maxBytes=2_000_000, backupCount=5, encoding="utf-8"
+    )
     handlers: list[logging.Handler] = [file_handler]
     if console:
         handlers.append(logging.StreamHandler())

@@ -24,8 +24,9 @@ _HEADLESS_PLATFORMS = ("offscreen", "minimal", "eglfs", "linuxfb", "vnc", "vkkhr
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="python -m app",
-                                     description="Stave jointer operator application")
+    parser = argparse.ArgumentParser(
+        prog="python -m app", description="Stave jointer operator application"
+    )
     parser.add_argument("--version", action="version", version=f"stave-jointer {__version__}")
     parser.add_argument("--config", type=Path, help="machine configuration file (TOML)")
     parser.add_argument("--backend", choices=BACKENDS_KNOWN, help="motion and I/O backend")
@@ -33,10 +34,18 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--db", type=Path, help="database file (default: user data directory)")
     parser.add_argument("--kiosk", action="store_true", help="full screen, no window frame")
     parser.add_argument("--lang", choices=("en", "sl"), help="language of the screens")
-    parser.add_argument("--screenshots", type=Path, metavar="DIR",
-                        help="render every screen to PNG files in DIR and exit")
-    parser.add_argument("--size", default="1024x768", metavar="WxH",
-                        help="window size for --screenshots (default 1024x768)")
+    parser.add_argument(
+        "--screenshots",
+        type=Path,
+        metavar="DIR",
+        help="render every screen to PNG files in DIR and exit",
+    )
+    parser.add_argument(
+        "--size",
+        default="1024x768",
+        metavar="WxH",
+        help="window size for --screenshots (default 1024x768)",
+    )
     return parser
 
 
@@ -60,9 +69,11 @@ def display_problem() -> str:
         return ""
     if os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
         return ""
-    return ("no display: the operator application needs a screen; run it on the panel's "
-            "desktop, or here with `xvfb-run -a ./run.sh`, or render the screens with "
-            "`./run.sh --screenshots DIR`")
+    return (
+        "no display: the operator application needs a screen; run it on the panel's "
+        "desktop, or here with `xvfb-run -a ./run.sh`, or render the screens with "
+        "`./run.sh --screenshots DIR`"
+    )
 
 
 def resolve_config(args: argparse.Namespace) -> MachineConfig:
@@ -81,8 +92,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     from app.logging_setup import setup_logging
 
     log_file = setup_logging(config.log_dir, config.log_level)
-    log.info("stave-jointer %s starting (backend %s, gauge %s), log %s",
-             __version__, config.backend, config.gauge, log_file)
+    log.info(
+        "stave-jointer %s starting (backend %s, gauge %s), log %s",
+        __version__,
+        config.backend,
+        config.gauge,
+        log_file,
+    )
     if args.screenshots is not None:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     problem = display_problem()
@@ -92,8 +108,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     from app.data.database import Database, default_database_path
 
-    db_path = args.db or (Path(config.database_path) if config.database_path
-                          else default_database_path())
+    db_path = args.db or (
+        Path(config.database_path) if config.database_path else default_database_path()
+    )
     language = args.lang or config.language
     if args.screenshots is not None:
         return _screenshots(config, db_path, args.screenshots, size)
@@ -109,8 +126,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         link.close()
 
 
-def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path,
-                 size: tuple[int, int]) -> int:
+def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tuple[int, int]) -> int:
     """Screenshots run the real machine in-process on a simulated clock, so that the states
     they show (a cycle running, an alarm active) are reached quickly and reproducibly."""
     import tempfile

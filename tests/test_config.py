@@ -32,8 +32,11 @@ def test_shipped_default_loads() -> None:
         (lambda d: d["backend"].update(period_ms=0.1), "backend.period_ms", ">= 1"),
         (lambda d: d["axes"]["X"].update(max_velocity=-3), "axes.X.max_velocity", "> 0"),
         (lambda d: d["axes"]["X"].update(max_velocity="fast"), "axes.X.max_velocity", "number"),
-        (lambda d: d["axes"]["Y"].update(max_position=-10), "axes.Y.max_position",
-         "greater than min_position"),
+        (
+            lambda d: d["axes"]["Y"].update(max_position=-10),
+            "axes.Y.max_position",
+            "greater than min_position",
+        ),
         (lambda d: d["axes"]["Z"].update(encoder="optical"), "axes.Z.encoder", "'absolute'"),
         (lambda d: d["axes"]["Z"].update(homing_direction=0), "axes.Z.homing_direction", "-1"),
         (lambda d: d["axes"]["X"].update(max_velocityy=3), "axes.X.max_velocityy", "known key"),
@@ -69,9 +72,16 @@ def test_command_line_overrides_backend() -> None:
 
 def test_app_exits_2_with_one_line_on_bad_config(tmp_path: Path) -> None:
     bad = tmp_path / "machine.toml"
-    bad.write_text(default_config_path().read_text().replace('name = "sim"', 'name = "ethercat"', 1))
-    result = subprocess.run([sys.executable, "-m", "app", "--config", str(bad)],
-                            capture_output=True, text=True, timeout=60)
+    bad.write_text(
+        default_config_path().read_text().replace('name = "sim"', 'name = "ethercat"', 1)
+    )
+    result = subprocess.run(
+        [sys.executable, "-m", "app", "--config", str(bad)],
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
     assert result.returncode == 2
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1

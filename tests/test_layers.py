@@ -22,10 +22,20 @@ RULES: dict[str, tuple[str, ...]] = {
     "machine": (*QT, "app.screens"),
     "drivers": (*QT, "app.screens", "app.machine", "app.data"),
     "data": (*QT, *FIELDBUS, "app.screens", "app.machine", "app.drivers"),
-    "screens": (*FIELDBUS, "app.drivers.sim", "app.drivers.modbus", "app.drivers.canopen",
-                "app.drivers.serial_gauge", "app.drivers.registry", "app.machine.planner",
-                "app.machine.executor", "app.machine.runtime", "app.machine.controller",
-                "app.machine.process_link", "app.machine.local_link"),
+    "screens": (
+        *FIELDBUS,
+        "app.drivers.sim",
+        "app.drivers.modbus",
+        "app.drivers.canopen",
+        "app.drivers.serial_gauge",
+        "app.drivers.registry",
+        "app.machine.planner",
+        "app.machine.executor",
+        "app.machine.runtime",
+        "app.machine.controller",
+        "app.machine.process_link",
+        "app.machine.local_link",
+    ),
 }
 
 

@@ -29,9 +29,17 @@ class AxisGroup:
         return tuple(self.configs)
 
     def update(self, feedback: Mapping[str, AxisFeedback]) -> None:
+        previous = self.feedback
         self.feedback = dict(feedback)
         for name, fb in self.feedback.items():
-            if not fb.enabled or fb.homing_active or name not in self.command:
+            before = previous.get(name)
+            # Homing moves the encoder into the machine frame, possibly within one period
+            # and in the period homing ends: the command follows the position until the
+            # first period after homing, so the frame change never becomes a setpoint jump.
+            frame_changed = before is not None and (
+                before.homing_active or before.homed != fb.homed
+            )
+            if not fb.enabled or fb.homing_active or frame_changed or name not in self.command:
                 self.command[name] = fb.position
 
     def position(self, name: str) -> float:

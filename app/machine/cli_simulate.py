@@ -219,8 +219,9 @@ def _home(runtime: MachineRuntime) -> None:
         HOMING_TIMEOUT_S,
     ):
         raise RuntimeError("homing did not finish")
-    if c.state is not MachineState.READY:
-        raise RuntimeError(f"homing ended in {c.state.value}: {c.state_text()}")
+    state: MachineState = c.state  # changed by run_until
+    if state is not MachineState.READY:
+        raise RuntimeError(f"homing ended in {state.value}: {c.state_text()}")
 
 
 @contextmanager

@@ -45,7 +45,7 @@ def run_now(job: PlanJob) -> concurrent.futures.Future[PlannedStave]:
     future: concurrent.futures.Future[PlannedStave] = concurrent.futures.Future()
     try:
         future.set_result(job())
-    except Exception as exc:  # noqa: BLE001 - handed to the cycle through the future
+    except Exception as exc:
         future.set_exception(exc)
     return future
 
@@ -272,7 +272,7 @@ class AutomaticCycle:
             planned = self._plan_future.result()
         except PlanningError as exc:
             raise CycleFault(exc.code, str(exc), "recipe") from exc
-        except Exception as exc:  # noqa: BLE001 - any planner failure is an alarm, not a crash
+        except Exception as exc:
             raise CycleFault("E051", f"{type(exc).__name__}: {exc}", "planner") from exc
         self.planned = planned
         self.plan_counter += 1

@@ -18,9 +18,9 @@ from pathlib import Path
 from app.config import MachineConfig
 from app.data.database import Database
 from app.data.errors import DataError, NotFoundError
+from app.data.recipe import Recipe
 from app.data.records import AlarmEvent, PieceResult, ProductionRecord
 from app.data.records import AlarmState as StoredAlarmState
-from app.data.recipe import Recipe
 from app.data.users import Role, User
 from app.machine.alarms import AlarmTransition
 from app.machine.process_params import config_parameters, stave_limits

@@ -7,7 +7,6 @@ from pathlib import Path
 
 import pytest
 
-
 from app.config import MachineConfig, load_config
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime

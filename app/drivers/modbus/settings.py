@@ -24,7 +24,7 @@ from dataclasses import dataclass, fields
 from itertools import pairwise
 from typing import Any
 
-from app.config import ConfigError, MachineConfig, _Section
+from app.config import ConfigError, MachineConfig, Section
 from app.drivers.contracts import InputImage, OutputImage
 
 MAX_READ_REGISTERS = 125  # Modbus limit of one read holding/input registers request
@@ -259,7 +259,7 @@ _DATA_TYPES = tuple(t.value for t in DataType)
 _ADDRESS_MAX = 0xFFFF
 
 
-def _address(section: _Section, name: str, default: int, optional: bool) -> int | None:
+def _address(section: Section, name: str, default: int, optional: bool) -> int | None:
     value = section.integer(name, default, -1 if optional else 0, _ADDRESS_MAX)
     if value < 0:
         return None
@@ -267,17 +267,17 @@ def _address(section: _Section, name: str, default: int, optional: bool) -> int 
 
 
 def _field(
-    section: _Section, name: str, d: Mapping[str, Any], data_type: DataType, optional: bool = False
+    section: Section, name: str, d: Mapping[str, Any], data_type: DataType, optional: bool = False
 ) -> Field | None:
     address = _address(section, name, d[name], optional)
     return None if address is None else Field(address, data_type)
 
 
-def _data_type(section: _Section, name: str, d: Mapping[str, Any]) -> DataType:
+def _data_type(section: Section, name: str, d: Mapping[str, Any]) -> DataType:
     return DataType(section.text(name, d[name], _DATA_TYPES))
 
 
-def _check_disjoint(section: _Section, named: list[tuple[str, Field]]) -> None:
+def _check_disjoint(section: Section, named: list[tuple[str, Field]]) -> None:
     ordered = sorted(named, key=lambda item: item[1].address)
     for (name_a, a), (name_b, b) in pairwise(ordered):
         if b.address < a.end:
@@ -291,7 +291,7 @@ def _check_disjoint(section: _Section, named: list[tuple[str, Field]]) -> None:
 def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
     """Check one register map (``raw`` holds every key, defaults filled in by the caller
     or missing ones taken from :data:`DEFAULT_DRIVE_MAP`)."""
-    s = _Section(raw, path, source)
+    s = Section(raw, path, source)
     d = DEFAULT_DRIVE_MAP
     table = RegisterTable(
         s.text("status_table", d["status_table"], tuple(t.value for t in RegisterTable))
@@ -395,7 +395,7 @@ def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
 
 
 def _endpoint(
-    section: _Section, raw: Mapping[str, Any], path: str, link: LinkSettings, source: str
+    section: Section, raw: Mapping[str, Any], path: str, link: LinkSettings, source: str
 ) -> Endpoint | None:
     """A device's own TCP server (``host``/``port`` keys), or None to use the link's."""
     present = [name for name in ("host", "port") if name in raw]
@@ -416,7 +416,7 @@ def _endpoint(
     return Endpoint(host.strip(), port)
 
 
-def _parse_link(s: _Section, raw: Mapping[str, Any], path: str, source: str) -> LinkSettings:
+def _parse_link(s: Section, raw: Mapping[str, Any], path: str, source: str) -> LinkSettings:
     transport = Transport(s.text("transport", "tcp", tuple(t.value for t in Transport)))
     timeout_s = s.number("timeout_ms", 50.0, 1.0, 5000.0) / 1000.0
     retries = s.integer("retries", 1, 0, 5)
@@ -475,17 +475,17 @@ def _parse_link(s: _Section, raw: Mapping[str, Any], path: str, source: str) -> 
 
 
 def _sub(
-    parent: _Section, name: str, path: str, source: str, exclude: tuple[str, ...] = ()
-) -> tuple[_Section, dict[str, Any]]:
+    parent: Section, name: str, path: str, source: str, exclude: tuple[str, ...] = ()
+) -> tuple[Section, dict[str, Any]]:
     """A sub-table as a checked section plus its raw values (``exclude``: keys the caller
     reads itself, such as lists)."""
     raw = parent.raw_table(name)
-    section = _Section({k: v for k, v in raw.items() if k not in exclude}, path, source)
+    section = Section({k: v for k, v in raw.items() if k not in exclude}, path, source)
     return section, raw
 
 
 def _parse_drive(
-    drives: _Section,
+    drives: Section,
     axis: str,
     link: LinkSettings,
     shared_map_raw: Mapping[str, Any],
@@ -512,7 +512,7 @@ def _parse_drive(
     return DriveSettings(axis, device_id, endpoint, counts, velocity_counts, drive_map)
 
 
-def _bit_table(s: _Section, names: tuple[str, ...], defaults: Mapping[str, int]) -> dict[str, int]:
+def _bit_table(s: Section, names: tuple[str, ...], defaults: Mapping[str, int]) -> dict[str, int]:
     bits: dict[str, int] = {}
     used: dict[int, str] = {}
     for name in names:
@@ -527,7 +527,7 @@ def _bit_table(s: _Section, names: tuple[str, ...], defaults: Mapping[str, int])
     return bits
 
 
-def _parse_coupler(root: _Section, link: LinkSettings, source: str) -> CouplerSettings:
+def _parse_coupler(root: Section, link: LinkSettings, source: str) -> CouplerSettings:
     path = "backend.modbus.io"
     s, raw = _sub(root, "io", path, source, exclude=("inverted",))
     device_id = s.integer("device_id", DEFAULT_COUPLER_ID, 1, 247)
@@ -580,7 +580,7 @@ def parse_modbus_settings(raw: object, config: MachineConfig) -> ModbusSettings:
     path = "backend.modbus"
     if not isinstance(raw, Mapping):
         raise ConfigError(path, raw, "a table", config.source)
-    s = _Section(raw, path, config.source)
+    s = Section(raw, path, config.source)
     link = _parse_link(s, raw, path, config.source)
     map_raw = {**DEFAULT_DRIVE_MAP, **s.raw_table("drive_map")}
     shared_map = parse_drive_map(map_raw, f"{path}.drive_map", config.source)

@@ -14,7 +14,7 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from app.config import ConfigError, MachineConfig, _Section
+from app.config import ConfigError, MachineConfig, Section
 
 DEFAULT_PATTERN = r"^\s*(?:W\s*[=:]?\s*)?(?P<width>[-+]?\d+(?:\.\d*)?)\s*(?:mm)?\s*$"
 
@@ -43,7 +43,7 @@ class SerialGaugeSettings:
     encoding: str = "ascii"
 
 
-def _encode(section: _Section, name: str, text: str) -> bytes:
+def _encode(section: Section, name: str, text: str) -> bytes:
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:
@@ -57,7 +57,7 @@ def parse_serial_gauge_settings(raw: object, config: MachineConfig) -> SerialGau
     path = "gauge.serial"
     if not isinstance(raw, Mapping):
         raise ConfigError(path, raw, "a table", config.source)
-    s = _Section(raw, path, config.source)
+    s = Section(raw, path, config.source)
     port = s.text("port", "")
     if not port.strip():
         raise s.error("port", port, "a serial device such as /dev/ttyUSB0")
