@@ -290,7 +290,7 @@ def test_busy_beyond_the_retries_counts_and_n_failures_lose_the_link() -> None:
 
 
 def test_a_silent_drive_is_tolerated_then_declares_the_link_lost() -> None:
-    with tcp_rig(table(timeout_ms=30.0, retries=1, max_consecutive_failures=3)) as (
+    with tcp_rig(table(timeout_ms=150.0, retries=1, max_consecutive_failures=3)) as (
         emulator,
         backend,
     ):
