@@ -292,6 +292,17 @@ def measure_lateness(
                 raise RuntimeError("the machine process sent no snapshot")
             link.send(cmd.SelectRecipe(1))
             link.send(cmd.Home())
+            homing_end = time.monotonic() + 120.0
+            while time.monotonic() < homing_end:  # not counted in duration_s
+                snap = link.latest()
+                if (
+                    snap is not None
+                    and snap.state is MachineState.READY
+                    and snap.all_homed
+                    and time.monotonic() > homing_end - 119.0
+                ):
+                    break
+                time.sleep(0.05)
             state = {"last": first.state, "cycles": 0, "started": 0.0}
 
             def drive_cycles() -> None:

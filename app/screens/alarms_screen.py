@@ -29,7 +29,7 @@ from app.machine.alarms import CATALOGUE
 from app.machine.commands import Acknowledge, Reset
 from app.machine.snapshot import AlarmState, AlarmView, MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
-from app.screens.formatting import format_clock
+from app.screens.formatting import format_table_time
 from app.screens.texts import alarm_state_text, alarm_text, history_state_text
 from app.screens.widgets.dialogs import ChoiceOverlay
 from app.screens.widgets.readouts import styled_label
@@ -42,20 +42,7 @@ PERIODS: tuple[tuple[str, timedelta | None], ...] = (
     ("week", timedelta(days=7)),
     ("all", None),
 )
-SOURCES: tuple[str, ...] = (
-    "X",
-    "Y",
-    "Z",
-    "estop",
-    "guard",
-    "gauge",
-    "spindle",
-    "clamps",
-    "centering",
-    "machine",
-    "io",
-    "jog",
-)
+AXIS_SOURCES: tuple[str, ...] = ("X", "Y", "Z")
 
 
 def _button(name: str, kind: str = "") -> QPushButton:
@@ -84,7 +71,9 @@ def _table(name: str, columns: int) -> QTableWidget:
 
 
 def _item(text: str) -> QTableWidgetItem:
-    return QTableWidgetItem(text)
+    item = QTableWidgetItem(text)
+    item.setToolTip(text)  # the whole text, where the column cuts it
+    return item
 
 
 class AlarmsScreen(Screen):
@@ -194,7 +183,7 @@ class AlarmsScreen(Screen):
                 self.tr("Code"),
                 self.tr("Alarm"),
                 self.tr("Source"),
-                self.tr("Change"),
+                self.tr("New state"),
                 self.tr("User"),
             ]
         )
@@ -235,7 +224,7 @@ class AlarmsScreen(Screen):
         for row, alarm in enumerate(alarms):
             moment = datetime.fromtimestamp(alarm.raised_at, tz=UTC)
             values = (
-                format_clock(moment),
+                format_table_time(moment),
                 alarm.code,
                 alarm_text(alarm.code, alarm.text),
                 alarm.source,
@@ -281,7 +270,9 @@ class AlarmsScreen(Screen):
 
     def choose_source(self) -> None:
         choices: list[tuple[str, str | None]] = [(self.tr("All sources"), None)]
-        choices += [(source, source) for source in SOURCES]
+        recent = self.context.database.list_alarm_events(AlarmEventFilter(limit=HISTORY_LIMIT))
+        sources = sorted({*AXIS_SOURCES, *(event.source for event in recent)})
+        choices += [(source, source) for source in sources]
         overlay = ChoiceOverlay(self.tr("Source"), choices, current=self.source_filter, columns=3)
         overlay.chosen.connect(self.set_source_filter)
         self.context.open(overlay)
@@ -308,16 +299,12 @@ class AlarmsScreen(Screen):
         table = self.history_table
         table.setRowCount(len(events))
         for row, event in enumerate(events):
-            change = (
-                f"{history_state_text(event.from_state.value)} → "
-                f"{history_state_text(event.to_state.value)}"
-            )
             values = (
-                format_clock(event.time),
+                format_table_time(event.time),
                 event.code,
                 alarm_text(event.code, event.text),
                 event.source,
-                change,
+                history_state_text(event.to_state.value),
                 event.user_name or "",
             )
             for column, text in enumerate(values):

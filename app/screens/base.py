@@ -43,6 +43,7 @@ class ScreenContext:
         self.link.send(command)
 
     def open(self, overlay: Overlay) -> Overlay:
+        self.session.touch()  # the panel is in use: keep a technician logged in
         overlay.open_on(self.host)
         return overlay
 

@@ -53,3 +53,8 @@ def format_optional(value: float | None, decimals: int = 1, unit: str = "") -> s
 def format_clock(moment: datetime) -> str:
     """A local date and time as the histories show it."""
     return moment.astimezone().strftime("%Y-%m-%d %H:%M:%S")
+
+
+def format_table_time(moment: datetime) -> str:
+    """A local time in a history table: day, month and time (the year is rarely needed)."""
+    return moment.astimezone().strftime("%d.%m. %H:%M:%S")

@@ -7,7 +7,7 @@ Qt send every widget a LanguageChange event; each screen re-sets its texts in ``
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, QObject, QTranslator, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, QTranslator, Signal
 
 from app.resources import resource_path
 
@@ -50,6 +50,8 @@ class LanguageManager(QObject):
             QCoreApplication.installTranslator(translator)
             self._translator = translator
         self.language = code
+        # Qt posts the LanguageChange; deliver it now, so the switch is complete on return.
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.LanguageChange)
         self.languageChanged.emit(code)
 
     def next_language(self) -> str:

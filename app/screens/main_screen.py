@@ -42,6 +42,8 @@ from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import AxisReadout, ValueTile, set_text, styled_label
 
+LEFT_WIDTH_PX = 268
+
 
 def _button(name: str, kind: str = "") -> QPushButton:
     button = QPushButton()
@@ -67,22 +69,31 @@ class MainScreen(Screen):
         self.prev_button.setText("◀")
         self.next_button = _button("nextRecipe")
         self.next_button.setText("▶")
+        # The recipe's number between the arrows is a button that opens the list; the name
+        # is shown in full below.
+        self.list_button = _button("recipeList", "recipe")
         self.number_label = styled_label("—", "bigvalue", "recipeNumber")
         self.number_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.number_label.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
+        inside = QVBoxLayout(self.list_button)
+        inside.setContentsMargins(2, 2, 2, 2)
+        inside.addWidget(self.number_label)
         self.name_label = styled_label("", "value", "recipeName")
         self.name_label.setWordWrap(True)
         self.name_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        self.list_button = _button("recipeList")
+        for arrow in (self.prev_button, self.next_button):
+            arrow.setProperty("kind", "arrow")
         stepper = QHBoxLayout()
+        stepper.setSpacing(6)
         stepper.addWidget(self.prev_button)
-        stepper.addWidget(self.number_label, 1)
+        stepper.addWidget(self.list_button, 1)
         stepper.addWidget(self.next_button)
         recipe_layout = QVBoxLayout(recipe_panel)
-        recipe_layout.setContentsMargins(10, 6, 10, 10)
+        recipe_layout.setContentsMargins(8, 4, 8, 8)
+        recipe_layout.setSpacing(4)
         recipe_layout.addWidget(self.recipe_caption)
         recipe_layout.addLayout(stepper)
         recipe_layout.addWidget(self.name_label)
-        recipe_layout.addWidget(self.list_button)
         self.prev_button.clicked.connect(lambda: self.step_recipe(-1))
         self.next_button.clicked.connect(lambda: self.step_recipe(+1))
         self.list_button.clicked.connect(self.open_recipe_list)
@@ -111,10 +122,9 @@ class MainScreen(Screen):
         left.addLayout(row)
         left.addWidget(self.hint_label)
         left.addStretch(1)
-        left.addWidget(self.load_button)
         left_widget = QWidget()
         left_widget.setLayout(left)
-        left_widget.setFixedWidth(300)
+        left_widget.setFixedWidth(LEFT_WIDTH_PX)
         self.left_widget = left_widget
 
         # -- right: positions, counters, cycle, plan ----------------------------------------
@@ -159,7 +169,8 @@ class MainScreen(Screen):
         cycle_layout.addWidget(self.elapsed_label, 1, 1)
         cycle_layout.addWidget(self.remaining_caption, 0, 2)
         cycle_layout.addWidget(self.remaining_label, 1, 2)
-        cycle_layout.addWidget(self.progress, 2, 0, 1, 3)
+        cycle_layout.addWidget(self.load_button, 0, 3, 2, 1)
+        cycle_layout.addWidget(self.progress, 2, 0, 1, 4)
         cycle_layout.setColumnStretch(0, 1)
 
         self.plan_view = PlanView()
@@ -188,14 +199,14 @@ class MainScreen(Screen):
 
     def retranslate(self) -> None:
         self.recipe_caption.setText(self.tr("Recipe"))
-        self.list_button.setText(self.tr("Choose recipe…"))
+        self.list_button.setToolTip(self.tr("Choose recipe…"))
         self.prev_button.setToolTip(self.tr("Previous recipe"))
         self.next_button.setToolTip(self.tr("Next recipe"))
         self.start_button.setText(self.tr("▶  START"))
         self.stop_button.setText(self.tr("■  STOP"))
         self.home_button.setText(self.tr("Home"))
         self.reset_button.setText(self.tr("Reset"))
-        self.load_button.setText(self.tr("Put a board in (simulation)"))
+        self.load_button.setText(self.tr("Put a board in\n(simulation)"))
         self.reset_shift_button.setText(self.tr("New\nshift"))
         self.shift_tile.set_caption(self.tr("Pieces this shift"))
         self.total_tile.set_caption(self.tr("Pieces total"))
@@ -336,7 +347,8 @@ class MainScreen(Screen):
         self._update_plan(snapshot)
 
     def apply_scale(self, scale: float) -> None:
-        self.left_widget.setFixedWidth(round(300 * scale))
+        self.left_widget.setFixedWidth(round(LEFT_WIDTH_PX * scale))
+        self.plan_view.set_scale(scale)
 
     def _enable(self, button: QPushButton, command: str) -> None:
         reason = refusal(self.snapshot, command)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, QTimer, Signal
+from PySide6.QtCore import QEvent, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QResizeEvent
 from PySide6.QtWidgets import QMainWindow, QStackedWidget, QVBoxLayout, QWidget
 
@@ -115,10 +115,6 @@ class MainWindow(QMainWindow):
         self.top_bar.languageClicked.connect(self.language_menu)
         self.session.userChanged.connect(self.on_user_changed)
         self.languages.languageChanged.connect(self._language_changed)
-        app = QCoreApplication.instance()
-        if app is not None:
-            app.installEventFilter(self)
-
         self.retranslate()
         self.nav.set_current("main")
         self.apply_scale(1.0)
@@ -139,6 +135,7 @@ class MainWindow(QMainWindow):
         """Make the screen with this key the visible one (ValueError for an unknown key)."""
         if key not in self.screens:
             raise ValueError(f"screen {key!r} is unknown; allowed: {', '.join(self.screens)}")
+        self.session.touch()
         if key != self.current_key:
             self.current_screen.deactivated()
             self.current_key = key
@@ -240,7 +237,9 @@ class MainWindow(QMainWindow):
     def on_user_changed(self) -> None:
         self._show_user()
         self.link.send(SetUser(self.session.name))
-        if self.session.user is not None:
+        if self.session.user is None:
+            self.notify(self.tr("Logged out."))
+        else:
             self.notify(
                 self.tr("Logged in: %1 (%2)")
                 .replace("%1", self.session.name)
@@ -253,7 +252,10 @@ class MainWindow(QMainWindow):
         if self.session.user is None:
             self.top_bar.show_user(role_text(Role.OPERATOR))
         else:
-            self.top_bar.show_user(f"{self.session.name} · {role_text(self.session.role)}")
+            role = role_text(self.session.role)
+            name = self.session.name
+            same = name.casefold() in (role.casefold(), self.session.role.label)
+            self.top_bar.show_user(role if same else f"{name} · {role}")
 
     def language_menu(self) -> None:
         overlay = ChoiceOverlay(
@@ -291,11 +293,6 @@ class MainWindow(QMainWindow):
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
         super().changeEvent(event)
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        if event.type() == QEvent.Type.MouseButtonPress:
-            self.session.touch()
-        return False
 
     # -- size ----------------------------------------------------------------------------------
 
@@ -345,7 +342,4 @@ class MainWindow(QMainWindow):
             return
         self.poller.stop()
         self._clock_timer.stop()
-        app = QCoreApplication.instance()
-        if app is not None:
-            app.removeEventFilter(self)
         super().closeEvent(event)

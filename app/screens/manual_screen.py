@@ -17,6 +17,7 @@ from PySide6.QtWidgets import (
     QGridLayout,
     QHBoxLayout,
     QPushButton,
+    QSizePolicy,
     QVBoxLayout,
     QWidget,
 )
@@ -92,6 +93,7 @@ class ManualScreen(Screen):
             button.setObjectName(f"jog_{axis}{'plus' if direction > 0 else 'minus'}")
             button.setProperty("kind", "jog")
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+            button.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
             button.holdStarted.connect(lambda a=axis, d=direction: self.jog_pressed(a, d))
             button.holdRefresh.connect(lambda a=axis, d=direction: self.jog_refresh(a, d))
             button.holdEnded.connect(lambda a=axis: self.jog_released(a))
@@ -134,13 +136,12 @@ class ManualScreen(Screen):
 
         jog_layout = QVBoxLayout(jog_panel)
         jog_layout.setContentsMargins(12, 8, 12, 12)
-        jog_layout.addWidget(self.mode_label)
-        jog_layout.addWidget(self.enter_button)
-        jog_layout.addLayout(cross)
-        jog_layout.addStretch(1)
+        mode_row = QHBoxLayout()
+        mode_row.addWidget(self.mode_label, 1)
+        mode_row.addWidget(self.enter_button)
+        jog_layout.addLayout(mode_row)
+        jog_layout.addLayout(cross, 1)
         jog_layout.addLayout(modes)
-        jog_layout.addWidget(self.step_caption)
-        jog_layout.addLayout(steps)
 
         # -- right: positions, speeds, homing, clamps, spindle ------------------------------
         self.axis_x = AxisReadout("X", "mm")
@@ -187,16 +188,21 @@ class ManualScreen(Screen):
 
         right = QVBoxLayout()
         right.setSpacing(8)
-        right.addLayout(positions)
         right.addWidget(speed_panel)
+        right.addWidget(self.step_caption)
+        right.addLayout(steps)
         right.addLayout(actions)
         right.addStretch(1)
 
-        layout = QHBoxLayout(self)
+        below = QHBoxLayout()
+        below.setSpacing(10)
+        below.addWidget(jog_panel, 5)
+        below.addLayout(right, 6)
+        layout = QVBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
-        layout.setSpacing(10)
-        layout.addWidget(jog_panel, 5)
-        layout.addLayout(right, 6)
+        layout.setSpacing(8)
+        layout.addLayout(positions)
+        layout.addLayout(below, 1)
         self.retranslate()
         self.set_step_mode(False)
 

@@ -25,6 +25,7 @@ from PySide6.QtWidgets import (
     QListWidget,
     QListWidgetItem,
     QPushButton,
+    QScrollArea,
     QScroller,
     QSizePolicy,
     QVBoxLayout,
@@ -52,6 +53,7 @@ from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import set_text, styled_label
 
 DEFAULT_PREVIEW_WIDTH_MM = 150.0
+LABEL_WIDTH_PX = 165
 NUMBER_FIELDS = (
     "length_mm",
     "thickness_mm",
@@ -125,6 +127,8 @@ class RecipesScreen(Screen):
         self.recipe_list = QListWidget()
         self.recipe_list.setObjectName("recipeList")
         self.recipe_list.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.recipe_list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.recipe_list.setTextElideMode(Qt.TextElideMode.ElideRight)
         self.recipe_list.itemClicked.connect(self._list_clicked)
         QScroller.grabGesture(
             self.recipe_list.viewport(), QScroller.ScrollerGestureType.TouchGesture
@@ -152,32 +156,36 @@ class RecipesScreen(Screen):
         list_layout.addLayout(list_buttons)
         self.list_widget = QWidget()
         self.list_widget.setLayout(list_layout)
-        self.list_widget.setFixedWidth(250)
+        self.list_widget.setFixedWidth(220)
 
         # -- editor ----------------------------------------------------------------------------
         editor = QFrame()
         editor.setObjectName("panel")
         self.editor_title = styled_label("", "title", "editorTitle")
-        grid = QGridLayout()
-        grid.setHorizontalSpacing(8)
-        grid.setVerticalSpacing(2)
+        rows = QVBoxLayout()
+        rows.setSpacing(6)
         self.field_labels: dict[str, QLabel] = {}
         self.range_labels: dict[str, QLabel] = {}
         self.field_buttons: dict[str, QPushButton] = {}
         self.error_labels: dict[str, QLabel] = {}
-        row = 0
         for name in FIELDS:
-            label = styled_label("", "value")
-            label.setStyleSheet("font-weight: normal;")
+            # One row per field: name and allowed range on the left, the value (a button
+            # that opens the keypad) on the right, the error (if any) across below.
+            label = styled_label("", "field", f"label_{name}")
+            label.setWordWrap(True)
             caption = styled_label("", "caption", f"range_{name}")
-            labels = QVBoxLayout()
-            labels.setSpacing(0)
-            labels.addWidget(label)
-            labels.addWidget(caption)
-            grid.addLayout(labels, row, 0)
+            caption.setWordWrap(True)
+            row = QGridLayout()
+            row.setHorizontalSpacing(8)
+            row.setVerticalSpacing(0)
+            row.addWidget(label, 0, 0)
+            row.addWidget(caption, 1, 0)
+            for text_label in (label, caption):
+                text_label.setFixedWidth(LABEL_WIDTH_PX)  # the values line up
+            row.setColumnStretch(1, 1)
             if name == "tilt_mode":
-                self.fixed_button = _button("tiltFixed")
-                self.barrel_button = _button("tiltBarrel")
+                self.fixed_button = _button("tiltFixed", "tab")
+                self.barrel_button = _button("tiltBarrel", "tab")
                 group = QButtonGroup(self)
                 mode_row = QHBoxLayout()
                 for button, mode in (
@@ -188,22 +196,25 @@ class RecipesScreen(Screen):
                     group.addButton(button)
                     button.clicked.connect(lambda _=False, m=mode: self.set_field("tilt_mode", m))
                     mode_row.addWidget(button)
-                grid.addLayout(mode_row, row, 1)
+                row.addLayout(mode_row, 0, 1, 2, 1)
             else:
                 button = _button(f"field_{name}", "field")
+                if name in ("name", "note"):
+                    button.setProperty("align", "left")  # show where a long text begins
                 button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
-                button.setMinimumWidth(200)
-                grid.addWidget(button, row, 1)
+                # Long names and notes must not widen the form: the text is cut instead.
+                button.setMinimumWidth(150)
+                button.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
+                row.addWidget(button, 0, 1, 2, 1)
                 self.field_buttons[name] = button
             error = styled_label("", "error", f"error_{name}")
             error.setWordWrap(True)
             error.setVisible(False)
-            grid.addWidget(error, row + 1, 0, 1, 2)
+            row.addWidget(error, 2, 0, 1, 2)
+            rows.addLayout(row)
             self.field_labels[name] = label
             self.range_labels[name] = caption
             self.error_labels[name] = error
-            row += 2
-        grid.setColumnStretch(1, 1)
         self.save_button = _button("saveRecipe", "primary")
         self.discard_button = _button("discardRecipe")
         self.use_button = _button("useRecipe")
@@ -214,11 +225,23 @@ class RecipesScreen(Screen):
         actions.addWidget(self.save_button)
         actions.addWidget(self.discard_button)
         actions.addWidget(self.use_button)
+        form = QWidget()
+        form_layout = QVBoxLayout(form)
+        form_layout.setContentsMargins(0, 0, 6, 0)
+        form_layout.addLayout(rows)
+        form_layout.addStretch(1)
+        self.form_scroll = QScrollArea()
+        self.form_scroll.setObjectName("recipeForm")
+        self.form_scroll.setWidget(form)
+        self.form_scroll.setWidgetResizable(True)
+        self.form_scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        QScroller.grabGesture(
+            self.form_scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture
+        )
         editor_layout = QVBoxLayout(editor)
         editor_layout.setContentsMargins(10, 6, 10, 8)
         editor_layout.addWidget(self.editor_title)
-        editor_layout.addLayout(grid)
-        editor_layout.addStretch(1)
+        editor_layout.addWidget(self.form_scroll, 1)
         editor_layout.addLayout(actions)
 
         # -- preview ---------------------------------------------------------------------------
@@ -229,7 +252,7 @@ class RecipesScreen(Screen):
         self.width_button.clicked.connect(self.edit_preview_width)
         self.width_caption = styled_label("", "caption")
         self.plan_view = PlanView(show_cutter=False)
-        self.plan_view.setMinimumSize(260, 160)
+        self.plan_view.setMinimumSize(220, 150)
         self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self.result_labels: dict[str, QLabel] = {}
         results = QGridLayout()
@@ -237,8 +260,9 @@ class RecipesScreen(Screen):
         for index, key in enumerate(("head", "d", "r", "tilt")):
             caption = styled_label("", "caption")
             value = styled_label("—", "value", f"preview_{key}")
-            results.addWidget(caption, 0, index)
-            results.addWidget(value, 1, index)
+            row, column = 2 * (index // 2), index % 2
+            results.addWidget(caption, row, column)
+            results.addWidget(value, row + 1, column)
             self.result_labels[key] = value
             self.result_labels[key + "_caption"] = caption
         self.preview_errors = styled_label("", "error", "previewErrors")
@@ -325,7 +349,7 @@ class RecipesScreen(Screen):
         self.discard_button.setText(self.tr("Discard"))
         self.use_button.setText(self.tr("Use on machine"))
         self.fixed_button.setText(self.tr("Fixed"))
-        self.barrel_button.setText(self.tr("From barrel"))
+        self.barrel_button.setText(self.tr("Barrel"))
         self.preview_title.setText(self.tr("Preview"))
         self.width_caption.setText(self.tr("Board width for the preview"))
         captions = {
@@ -528,7 +552,7 @@ class RecipesScreen(Screen):
             "tilt_deg": f"{format_number(draft.tilt_deg)} °",
             "barrel_diameter_mm": format_optional(draft.barrel_diameter_mm, 1, "mm"),
             "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
-            "note": draft.note or "—",
+            "note": (draft.note[:60] + "…" if len(draft.note) > 60 else draft.note) or "—",
         }
         for name, text in values.items():
             set_text(self.field_buttons[name], text)
@@ -800,4 +824,8 @@ class RecipesScreen(Screen):
             self._update_buttons()
 
     def apply_scale(self, scale: float) -> None:
-        self.list_widget.setFixedWidth(round(250 * scale))
+        self.list_widget.setFixedWidth(round(220 * scale))
+        for name in FIELDS:
+            for label in (self.field_labels[name], self.range_labels[name]):
+                label.setFixedWidth(round(LABEL_WIDTH_PX * scale))
+        self.plan_view.set_scale(scale)

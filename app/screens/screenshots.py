@@ -161,23 +161,19 @@ def render_screenshots(
                 Start(), lambda s: s.state is MachineState.AUTOMATIC, "cycle started"
             )
             driver.window.link.send(LoadBoard())
-            driver.until(
-                lambda s: s.pieces_total > 0 or s.cycle.step is CycleStep.CUTTING_A,
-                "cutting side A",
-            )
+            driver.until(lambda s: s.cycle.step is CycleStep.CUTTING_A, "cutting side A")
             total = driver.snapshot().pieces_total  # type: ignore[union-attr]
             # One whole board, so the counters and the last width are filled in.
             driver.until(
-                lambda s: s.pieces_total > total or s.state is not MachineState.AUTOMATIC,
+                lambda s: s.pieces_total > total and s.state is MachineState.READY,
                 "first board finished",
             )
-            driver.window.link.send(LoadBoard())
-            driver.until(
-                lambda s: (
-                    s.cycle.step is CycleStep.CUTTING_B or s.state is not MachineState.AUTOMATIC
-                ),
-                "cutting side B",
+            # The next board: Start again, and cut until side B.
+            driver.send_and_wait(
+                Start(), lambda s: s.state is MachineState.AUTOMATIC, "second cycle started"
             )
+            driver.window.link.send(LoadBoard())
+            driver.until(lambda s: s.cycle.step is CycleStep.CUTTING_B, "cutting side B")
             window.show_screen("main")
             shoot("main-running")
 

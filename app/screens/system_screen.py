@@ -96,23 +96,21 @@ class SystemScreen(Screen):
         # -- settings page -----------------------------------------------------------------------
         settings = QWidget()
         self.group_buttons: dict[str, QPushButton] = {}
-        group_box = QVBoxLayout()
-        group_box.setSpacing(6)
+        group_grid = QGridLayout()
+        group_grid.setSpacing(6)
         button_group = QButtonGroup(self)
-        for key in [*groups(), "log", "simulation"]:
-            button = _button(f"group_{key}")
+        keys = [*groups(), "log", "simulation"]
+        columns = (len(keys) + 2) // 2
+        for index, key in enumerate(keys):
+            button = _button(f"group_{key}", "tab")
             button.setCheckable(True)
             button.clicked.connect(lambda _=False, k=key: self.show_group(k))
             button_group.addButton(button)
-            group_box.addWidget(button)
+            group_grid.addWidget(button, index // columns, index % columns)
             self.group_buttons[key] = button
-        group_box.addStretch(1)
-        self.lock_button = _button("lockButton")
+        self.lock_button = _button("lockButton", "tab")
         self.lock_button.clicked.connect(self.context.session.logout)
-        group_box.addWidget(self.lock_button)
-        self.group_widget = QWidget()
-        self.group_widget.setLayout(group_box)
-        self.group_widget.setFixedWidth(230)
+        group_grid.addWidget(self.lock_button, 1, columns - 1)
 
         self.pages = QStackedWidget()
         # parameter page
@@ -127,7 +125,7 @@ class SystemScreen(Screen):
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         QScroller.grabGesture(scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture)
         self.param_buttons: dict[str, QPushButton] = {}
-        self.param_labels: dict[str, tuple[QLabel, QLabel, QLabel]] = {}
+        self.param_labels: dict[str, tuple[QLabel, QLabel]] = {}
         param_page = QFrame()
         param_page.setObjectName("panel")
         param_layout = QVBoxLayout(param_page)
@@ -184,9 +182,10 @@ class SystemScreen(Screen):
         self.pages.addWidget(sim_page)
         self.param_page, self.log_page, self.sim_page = param_page, log_page, sim_page
 
-        settings_layout = QHBoxLayout(settings)
+        settings_layout = QVBoxLayout(settings)
         settings_layout.setContentsMargins(0, 0, 0, 0)
-        settings_layout.addWidget(self.group_widget)
+        settings_layout.setSpacing(8)
+        settings_layout.addLayout(group_grid)
         settings_layout.addWidget(self.pages, 1)
 
         self.body = QStackedWidget()
@@ -289,6 +288,8 @@ class SystemScreen(Screen):
             item = self.param_grid.takeAt(0)
             widget = item.widget() if item is not None else None
             if widget is not None:
+                widget.hide()  # at once: deleteLater waits for the event loop
+                widget.setParent(None)  # type: ignore[call-overload]
                 widget.deleteLater()
         self.param_buttons.clear()
         self.param_labels.clear()
@@ -300,19 +301,21 @@ class SystemScreen(Screen):
             description.setWordWrap(True)
             description.setStyleSheet("font-weight: normal;")
             unit = f" {unit_text(spec.unit)}" if spec.unit else ""
-            caption = styled_label(
+            allowed = self.context.session.can(spec.required_role)
+            caption_text = (
                 f"{spec.name} · {format_number(spec.minimum, 9)} … "
-                f"{format_number(spec.maximum, 9)}{unit}",
-                "caption",
+                f"{format_number(spec.maximum, 9)}{unit}"
             )
-            lock = styled_label("", "caption")
+            if not allowed:
+                caption_text += " · " + self.tr("needs %1").replace(
+                    "%1", role_text(spec.required_role)
+                )
+            caption = styled_label(caption_text, "caption")
+            caption.setWordWrap(True)
             button = _button(f"param_{spec.name}", "field")
             button.setMinimumWidth(190)
             button.setText(f"{format_number(self.values[spec.name], 6)}{unit}")
-            allowed = self.context.session.can(spec.required_role)
             button.setEnabled(allowed)
-            if not allowed:
-                lock.setText(self.tr("needs %1").replace("%1", role_text(spec.required_role)))
             button.clicked.connect(lambda _=False, s=spec: self.edit_parameter(s))
             labels = QVBoxLayout()
             labels.setSpacing(0)
@@ -322,9 +325,10 @@ class SystemScreen(Screen):
             holder.setLayout(labels)
             self.param_grid.addWidget(holder, row, 0)
             self.param_grid.addWidget(button, row, 1)
-            self.param_grid.addWidget(lock, row, 2)
+            holder.show()  # now, not when the layout gets round to it
+            button.show()
             self.param_buttons[spec.name] = button
-            self.param_labels[spec.name] = (description, caption, lock)
+            self.param_labels[spec.name] = (description, caption)
             row += 1
         self.param_grid.setColumnStretch(0, 1)
         self.param_grid.setRowStretch(row, 1)
@@ -403,12 +407,9 @@ class SystemScreen(Screen):
         self.snapshot = snapshot
         simulation = not refusal(snapshot, "InjectFault")
         button = self.group_buttons["simulation"]
-        if button.isVisible() != simulation and self.unlocked:
-            button.setVisible(simulation)
+        if button.isHidden() == simulation:
+            button.setHidden(not simulation)
         for fault_button in self.fault_buttons.values():
             fault_button.setEnabled(simulation)
         self.clear_faults_button.setEnabled(simulation)
         self.load_board_button.setEnabled(simulation and not snapshot.inputs.part_present)
-
-    def apply_scale(self, scale: float) -> None:
-        self.group_widget.setFixedWidth(round(230 * scale))

@@ -1,4 +1,5 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
     <name>AlarmStates</name>
@@ -168,7 +169,7 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+159" />
+        <location filename="../../app/screens/alarms_screen.py" line="+148" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
@@ -254,19 +255,19 @@
     <message>
         <location line="-9" />
         <location line="+10" />
-        <location line="+89" />
+        <location line="+91" />
         <source>Source</source>
         <translation>Source</translation>
     </message>
     <message>
-        <location line="-98" />
+        <location line="-100" />
         <source>State</source>
         <translation>State</translation>
     </message>
     <message>
         <location line="+10" />
-        <source>Change</source>
-        <translation>Change</translation>
+        <source>New state</source>
+        <translation>New state</translation>
     </message>
     <message>
         <location line="+1" />
@@ -512,7 +513,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+187" />
+        <location filename="../../app/screens/main_screen.py" line="+198" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -558,8 +559,10 @@
     </message>
     <message>
         <location line="+1" />
-        <source>Put a board in (simulation)</source>
-        <translation>Put a board in (simulation)</translation>
+        <source>Put a board in
+(simulation)</source>
+        <translation>Put a board in
+(simulation)</translation>
     </message>
     <message>
         <location line="+1" />
@@ -647,18 +650,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+160" />
+        <location filename="../../app/screens/main_window.py" line="+157" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+114" />
+        <location line="+119" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-107" />
+        <location line="-112" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -694,12 +697,17 @@ shift</translation>
         <translation>This needs the %1 level: enter a PIN</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15" />
+        <source>Logged out.</source>
+        <translation>Logged out.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Logged in: %1 (%2)</source>
         <translation>Logged in: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+18" />
         <location line="+22" />
         <source>Language</source>
         <translation>Language</translation>
@@ -726,13 +734,13 @@ shift</translation>
     </message>
     <message>
         <location line="+5" />
-        <location line="+41" />
+        <location line="+36" />
         <location line="+2" />
         <source>Shut down</source>
         <translation>Shut down</translation>
     </message>
     <message>
-        <location line="-42" />
+        <location line="-37" />
         <source>Log in or out</source>
         <translation>Log in or out</translation>
     </message>
@@ -742,7 +750,7 @@ shift</translation>
         <translation>Stave jointer</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+33" />
         <source>Stop the machine safely and close the program?</source>
         <translation>Stop the machine safely and close the program?</translation>
     </message>
@@ -750,7 +758,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+206" />
+        <location filename="../../app/screens/manual_screen.py" line="+212" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -919,7 +927,7 @@ shift</translation>
         <translation>Distance beyond the board's right end where the tilt changes sides</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Height of the tilt pivot above the table (Hm)</source>
         <translation>Height of the tilt pivot above the table (Hm)</translation>
     </message>
@@ -944,7 +952,7 @@ shift</translation>
         <translation>Lead-in before x = 0 and lead-out after x = L (longer than the tool radius)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Length of one shift</source>
         <translation>Length of one shift</translation>
     </message>
@@ -1004,7 +1012,7 @@ shift</translation>
         <translation>Start of the first shift of the day, hours after midnight (6.5 = 06:30)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Tilt (Z) acceleration</source>
         <translation>Tilt (Z) acceleration</translation>
     </message>
@@ -1085,7 +1093,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+267" />
+        <location filename="../../app/screens/recipes_screen.py" line="+291" />
         <location line="+51" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -1221,8 +1229,8 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>From barrel</source>
-        <translation>From barrel</translation>
+        <source>Barrel</source>
+        <translation>Barrel</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1520,7 +1528,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+205" />
+        <location filename="../../app/screens/system_screen.py" line="+204" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -1638,12 +1646,12 @@ Log in as technician or service to change them.</translation>
         <translation>Put a board in</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+59" />
         <source>needs %1</source>
         <translation>needs %1</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+53" />
         <source>Log in to change parameters.</source>
         <translation>Log in to change parameters.</translation>
     </message>

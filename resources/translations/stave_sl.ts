@@ -1,43 +1,44 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="sl" sourcelanguage="en">
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+50" />
-        <location line="+8" />
+        <location filename="../../app/screens/texts.py" line="+50"/>
+        <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
     </message>
     <message>
-        <location line="-7" />
-        <location line="+8" />
+        <location line="-7"/>
+        <location line="+8"/>
         <source>active, unacknowledged</source>
         <translation>aktiven, nepotrjen</translation>
     </message>
     <message>
-        <location line="-7" />
-        <location line="+8" />
+        <location line="-7"/>
+        <location line="+8"/>
         <source>active, acknowledged</source>
         <translation>aktiven, potrjen</translation>
     </message>
     <message>
-        <location line="-7" />
-        <location line="+8" />
+        <location line="-7"/>
+        <location line="+8"/>
         <source>cleared, unacknowledged</source>
         <translation>odpravljen, nepotrjen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>shelved</source>
         <translation>odložen</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>fault</source>
         <translation>napaka</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>warning</source>
         <translation>opozorilo</translation>
     </message>
@@ -45,122 +46,122 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+31" />
+        <location filename="catalogue_strings.py" line="+31"/>
         <source>Axis lost its home position</source>
         <translation>Os je izgubila referenčno lego</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Board removed during the cycle</source>
         <translation>Deska odstranjena med ciklom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Centering device did not reach its sensor</source>
         <translation>Centrirna naprava ni dosegla senzorja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Clamps did not reach their sensor</source>
         <translation>Vpenjala niso dosegla senzorja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Communication with the drives or I/O lost</source>
         <translation>Izgubljena komunikacija s pogoni ali V/I</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device event</source>
         <translation>Dogodek naprave</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Drive did not enable</source>
         <translation>Pogon se ni vklopil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Drive fault</source>
         <translation>Napaka pogona</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Drive not enabled during motion</source>
         <translation>Pogon med gibanjem ni vklopljen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Emergency stop</source>
         <translation>Zasilna zaustavitev</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Following error too large</source>
         <translation>Prevelik pogrešek sledenja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Guard open during motion</source>
         <translation>Zaščita odprta med gibanjem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Homing did not complete</source>
         <translation>Referenciranje ni končano</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Internal error in the machine process</source>
         <translation>Notranja napaka v procesu stroja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Jog stopped: no refresh from the screen</source>
         <translation>Ročni premik ustavljen: zaslon ni osvežil ukaza</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Limit switch reached</source>
         <translation>Doseženo končno stikalo</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Measured width not allowed for this recipe</source>
         <translation>Izmerjena širina ni dovoljena za ta recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Spindle did not start</source>
         <translation>Vreteno se ni zagnalo</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Spindle stopped while cutting</source>
         <translation>Vreteno se je ustavilo med rezanjem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tool path could not be planned</source>
         <translation>Poti orodja ni bilo mogoče načrtovati</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tool path outside the axis travel</source>
         <translation>Pot orodja je zunaj hoda osi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Width gauge disconnected</source>
         <translation>Merilnik širine je odklopljen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Width gauge gave no reading</source>
         <translation>Merilnik širine ni dal meritve</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Width gauge reading not understood</source>
         <translation>Meritev merilnika širine ni razumljiva</translation>
     </message>
@@ -168,128 +169,128 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+159" />
+        <location filename="../../app/screens/alarms_screen.py" line="+148"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Active alarms</source>
         <translation>Aktivni alarmi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Acknowledge all</source>
         <translation>Potrdi vse</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reset machine</source>
         <translation>Ponastavi stroj</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>No active alarms.</source>
         <translation>Ni aktivnih alarmov.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>History</source>
         <translation>Zgodovina</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>1 hour</source>
         <translation>1 ura</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>24 hours</source>
         <translation>24 ur</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>7 days</source>
         <translation>7 dni</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>All</source>
         <translation>Vse</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Code: %1</source>
         <translation>Koda: %1</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+3" />
+        <location line="+0"/>
+        <location line="+3"/>
         <source>all</source>
         <translation>vse</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Source: %1</source>
         <translation>Vir: %1</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+10" />
+        <location line="+4"/>
+        <location line="+10"/>
         <source>Time</source>
         <translation>Čas</translation>
     </message>
     <message>
-        <location line="-9" />
-        <location line="+10" />
+        <location line="-9"/>
+        <location line="+10"/>
         <source>Code</source>
         <translation>Koda</translation>
     </message>
     <message>
-        <location line="-9" />
-        <location line="+10" />
+        <location line="-9"/>
+        <location line="+10"/>
         <source>Alarm</source>
         <translation>Alarm</translation>
     </message>
     <message>
-        <location line="-9" />
-        <location line="+10" />
-        <location line="+89" />
+        <location line="-9"/>
+        <location line="+10"/>
+        <location line="+91"/>
         <source>Source</source>
         <translation>Vir</translation>
     </message>
     <message>
-        <location line="-98" />
+        <location line="-100"/>
         <source>State</source>
         <translation>Stanje</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>Change</source>
-        <translation>Sprememba</translation>
+        <location line="+10"/>
+        <source>New state</source>
+        <translation>Novo stanje</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>User</source>
         <translation>Uporabnik</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+51"/>
         <source>Acknowledge</source>
         <translation>Potrdi</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>All codes</source>
         <translation>Vse kode</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Alarm code</source>
         <translation>Koda alarma</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>All sources</source>
         <translation>Vsi viri</translation>
     </message>
@@ -297,7 +298,7 @@
 <context>
     <name>ChoiceOverlay</name>
     <message>
-        <location filename="../../app/screens/widgets/dialogs.py" line="+126" />
+        <location filename="../../app/screens/widgets/dialogs.py" line="+126"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
@@ -305,7 +306,7 @@
 <context>
     <name>ConfirmOverlay</name>
     <message>
-        <location line="-70" />
+        <location line="-70"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
@@ -313,47 +314,47 @@
 <context>
     <name>FileChooser</name>
     <message>
-        <location filename="../../app/screens/widgets/file_chooser.py" line="+90" />
+        <location filename="../../app/screens/widgets/file_chooser.py" line="+90"/>
         <source>▲ Up</source>
         <translation>▲ Gor</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Home</source>
         <translation>Domača mapa</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Save here</source>
         <translation>Shrani sem</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Open</source>
         <translation>Odpri</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+60"/>
         <source>File name</source>
         <translation>Ime datoteke</translation>
     </message>
     <message>
-        <location line="+17" />
-        <source>A file name cannot contain '/'.</source>
-        <translation>Ime datoteke ne sme vsebovati '/'.</translation>
+        <location line="+17"/>
+        <source>A file name cannot contain &apos;/&apos;.</source>
+        <translation>Ime datoteke ne sme vsebovati &apos;/&apos;.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>The file name must end in .json or .csv.</source>
         <translation>Ime datoteke se mora končati s .json ali .csv.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Choose a file first.</source>
         <translation>Najprej izberite datoteko.</translation>
     </message>
@@ -361,22 +362,22 @@
 <context>
     <name>FractionKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+342" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+342"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OK</source>
         <translation>V redu</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+51"/>
         <source>Enter both the numerator and the denominator.</source>
         <translation>Vnesite števec in imenovalec.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>The denominator must not be 0.</source>
         <translation>Imenovalec ne sme biti 0.</translation>
     </message>
@@ -384,127 +385,127 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-48" />
+        <location filename="catalogue_strings.py" line="-48"/>
         <source>a cycle is already running</source>
         <translation>cikel že teče</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>already in manual mode</source>
         <translation>stroj je že v ročnem načinu</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>axes are not homed: home the machine first</source>
         <translation>osi niso referencirane: najprej referencirajte stroj</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>close the guard first</source>
         <translation>najprej zaprite zaščito</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>leave manual mode first</source>
         <translation>najprej zapustite ročni način</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is busy (automatic): stop it first</source>
         <translation>stroj je zaseden (avtomatika): najprej ga ustavite</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is busy (homing): stop it first</source>
         <translation>stroj je zaseden (referenciranje): najprej ga ustavite</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is busy (stopping): stop it first</source>
         <translation>stroj je zaseden (ustavljanje): najprej ga ustavite</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is in emergency stop: press Reset first</source>
         <translation>stroj je v zasilni zaustavitvi: najprej pritisnite Ponastavi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is in error: press Reset first</source>
         <translation>stroj je v napaki: najprej pritisnite Ponastavi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>machine is still starting up</source>
         <translation>stroj se še zaganja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no connection to the machine</source>
         <translation>ni povezave s strojem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not in manual mode</source>
         <translation>stroj ni v ročnem načinu</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not possible while homing</source>
         <translation>ni mogoče med referenciranjem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not possible while not homed</source>
         <translation>ni mogoče, dokler osi niso referencirane</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>not possible while stopping</source>
         <translation>ni mogoče med ustavljanjem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>nothing is moving</source>
         <translation>nič se ne premika</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>nothing to reset</source>
         <translation>ničesar ni treba ponastaviti</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>only on the simulated machine</source>
         <translation>samo na simuliranem stroju</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>open the Manual screen to jog</source>
         <translation>za ročni premik odprite zaslon Ročno</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>release the emergency stop first</source>
         <translation>najprej sprostite zasilno zaustavitev</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>reset done</source>
         <translation>ponastavitev opravljena</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>select a recipe first</source>
         <translation>najprej izberite recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unknown command</source>
         <translation>neznan ukaz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>wait until the cycle has ended</source>
         <translation>počakajte, da se cikel konča</translation>
     </message>
@@ -512,134 +513,136 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+187" />
+        <location filename="../../app/screens/main_screen.py" line="+198"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Recipe</source>
         <translation>Recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Choose recipe…</source>
         <translation>Izberi recept…</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Previous recipe</source>
         <translation>Prejšnji recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Next recipe</source>
         <translation>Naslednji recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>▶  START</source>
         <translation>▶  ZAGON</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>■  STOP</source>
         <translation>■  USTAVI</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home</source>
         <translation>Referenciraj</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reset</source>
         <translation>Ponastavi</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Put a board in (simulation)</source>
-        <translation>Vstavi desko (simulacija)</translation>
+        <location line="+1"/>
+        <source>Put a board in
+(simulation)</source>
+        <translation>Vstavi desko
+(simulacija)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>New
 shift</source>
         <translation>Nova
 izmena</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pieces this shift</source>
         <translation>Kosov v izmeni</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Pieces total</source>
         <translation>Kosov skupaj</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Last width</source>
         <translation>Zadnja širina</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Last cycle</source>
         <translation>Zadnji cikel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Elapsed</source>
         <translation>Pretečeno</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Remaining</source>
         <translation>Preostalo</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>NOT HOMED</source>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>Choose a recipe</source>
         <translation>Izberite recept</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>New shift</source>
         <translation>Nova izmena</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start counting the pieces of a new shift from 0? The total count is kept.</source>
         <translation>Začnem štetje kosov nove izmene od 0? Skupno število ostane.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start new shift</source>
         <translation>Začni novo izmeno</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>No recipe selected</source>
         <translation>Ni izbranega recepta</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No. %1</source>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+62"/>
         <source>No cycle running</source>
         <translation>Cikel ne teče</translation>
     </message>
@@ -647,102 +650,107 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+160" />
+        <location filename="../../app/screens/main_window.py" line="+157"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+114" />
+        <location line="+2"/>
+        <location line="+119"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
     <message>
-        <location line="-107" />
+        <location line="-112"/>
         <source>The machine is not running.</source>
         <translation>Stroj ne deluje.</translation>
     </message>
     <message>
-        <location line="+18" />
-        <location line="+4" />
+        <location line="+18"/>
+        <location line="+4"/>
         <source>Log out</source>
         <translation>Odjava</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-3"/>
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Odjavim uporabnika %1 in se vrnem na raven operaterja?</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Log in: enter your PIN</source>
         <translation>Prijava: vnesite PIN</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Wrong PIN.</source>
         <translation>Napačen PIN.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>This needs the %1 level; %2 is %3.</source>
         <translation>Potrebna je raven %1; %2 ima raven %3.</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>This needs the %1 level: enter a PIN</source>
         <translation>Potrebna je raven %1: vnesite PIN</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15"/>
+        <source>Logged out.</source>
+        <translation>Odjavljen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Logged in: %1 (%2)</source>
         <translation>Prijavljen: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+15" />
-        <location line="+22" />
+        <location line="+18"/>
+        <location line="+22"/>
         <source>Language</source>
         <translation>Jezik</translation>
     </message>
     <message>
-        <location line="-10" />
+        <location line="-10"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+41" />
-        <location line="+2" />
+        <location line="+5"/>
+        <location line="+36"/>
+        <location line="+2"/>
         <source>Shut down</source>
         <translation>Izklop</translation>
     </message>
     <message>
-        <location line="-42" />
+        <location line="-37"/>
         <source>Log in or out</source>
         <translation>Prijava ali odjava</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Stave jointer</source>
         <translation>Stroj za obdelavo dog</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+33"/>
         <source>Stop the machine safely and close the program?</source>
         <translation>Varno ustavim stroj in zaprem program?</translation>
     </message>
@@ -750,117 +758,117 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+206" />
+        <location filename="../../app/screens/manual_screen.py" line="+212"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Enter manual mode</source>
         <translation>Vstopi v ročni način</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Continuous</source>
         <translation>Zvezno</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Step</source>
         <translation>Korak</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Step size (mm for X-Y, ° for tilt)</source>
         <translation>Velikost koraka (mm za X-Y, ° za nagib)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Jog speed and acceleration</source>
         <translation>Hitrost in pospešek ročnega premika</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Speed</source>
         <translation>Hitrost</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Acceleration</source>
         <translation>Pospešek</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home X</source>
         <translation>Referenciraj X</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home Y</source>
         <translation>Referenciraj Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home Z</source>
         <translation>Referenciraj Z</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home all</source>
         <translation>Referenciraj vse</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>NOT HOMED</source>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Waiting for the machine…</source>
         <translation>Čakam na stroj…</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+51"/>
         <source>Jog speed %1</source>
         <translation>Hitrost ročnega premika %1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Jog acceleration %1</source>
         <translation>Pospešek ročnega premika %1</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+34"/>
         <source>Manual mode: hold a button to jog.</source>
         <translation>Ročni način: za premik držite gumb.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Not in manual mode.</source>
         <translation>Stroj ni v ročnem načinu.</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+34"/>
         <source>Open clamps</source>
         <translation>Odpri vpenjala</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Close clamps</source>
         <translation>Zapri vpenjala</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Spindle OFF</source>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>
@@ -868,7 +876,7 @@ izmena</translation>
 <context>
     <name>MessageOverlay</name>
     <message>
-        <location filename="../../app/screens/widgets/dialogs.py" line="+25" />
+        <location filename="../../app/screens/widgets/dialogs.py" line="+25"/>
         <source>OK</source>
         <translation>V redu</translation>
     </message>
@@ -876,37 +884,37 @@ izmena</translation>
 <context>
     <name>NumberKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="-245" />
+        <location filename="../../app/screens/widgets/keypad.py" line="-245"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OK</source>
         <translation>V redu</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Allowed: whole number from %1 to %2%3</source>
         <translation>Dovoljeno: celo število od %1 do %2%3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Allowed: %1 to %2%3, or empty</source>
         <translation>Dovoljeno: od %1 do %2%3 ali prazno</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Allowed: %1 to %2%3</source>
         <translation>Dovoljeno: od %1 do %2%3</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+54"/>
         <source>Enter a number. %1</source>
         <translation>Vnesite število. %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1%2 is outside the allowed range.</source>
         <translation>%1%2 je zunaj dovoljenega območja.</translation>
     </message>
@@ -914,152 +922,152 @@ izmena</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+25" />
-        <source>Distance beyond the board's right end where the tilt changes sides</source>
+        <location filename="catalogue_strings.py" line="+25"/>
+        <source>Distance beyond the board&apos;s right end where the tilt changes sides</source>
         <translation>Razdalja za desnim koncem deske, kjer se nagib zamenja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3"/>
         <source>Height of the tilt pivot above the table (Hm)</source>
         <translation>Višina osi nagiba nad mizo (Hm)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home position of X</source>
         <translation>Referenčna lega X</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home position of Y</source>
         <translation>Referenčna lega Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Home tilt of the router (Z)</source>
         <translation>Referenčni nagib rezkarja (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Lead-in before x = 0 and lead-out after x = L (longer than the tool radius)</source>
         <translation>Uvod pred x = 0 in izvod za x = L (daljša od polmera orodja)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3"/>
         <source>Length of one shift</source>
         <translation>Dolžina ene izmene</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Number of shifts per day</source>
         <translation>Število izmen na dan</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>P0: machine X of the stave's left end</source>
+        <location line="+1"/>
+        <source>P0: machine X of the stave&apos;s left end</source>
         <translation>P0: strojni X levega konca doge</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>P0: machine Y of the table centre line</source>
         <translation>P0: strojni Y srednjice mize</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Radius of the router cutter</source>
         <translation>Polmer rezkarja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: highest X</source>
         <translation>Programska meja: največji X</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: highest Y</source>
         <translation>Programska meja: največji Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: highest tilt</source>
         <translation>Programska meja: največji nagib</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: lowest X</source>
         <translation>Programska meja: najmanjši X</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: lowest Y</source>
         <translation>Programska meja: najmanjši Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Soft limit: lowest tilt</source>
         <translation>Programska meja: najmanjši nagib</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start of the first shift of the day, hours after midnight (6.5 = 06:30)</source>
         <translation>Začetek prve izmene dneva, ure po polnoči (6.5 = 06:30)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3"/>
         <source>Tilt (Z) acceleration</source>
         <translation>Pospešek nagiba (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tilt (Z) jerk limit</source>
         <translation>Omejitev sunka nagiba (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tilt (Z) jog acceleration</source>
         <translation>Pospešek ročnega nagiba (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tilt (Z) jog speed</source>
         <translation>Hitrost ročnega nagiba (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tilt (Z) speed</source>
         <translation>Hitrost nagiba (Z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tolerance of the stave-side solver (root of the cubic in D)</source>
         <translation>Toleranca izračuna stranice doge (koren kubične enačbe za D)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y acceleration</source>
         <translation>Pospešek X-Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y cutting feed</source>
         <translation>Podajanje rezanja X-Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y jerk limit</source>
         <translation>Omejitev sunka X-Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y jog acceleration</source>
         <translation>Pospešek ročnega premika X-Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y jog speed</source>
         <translation>Hitrost ročnega premika X-Y</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>X-Y speed of non-cutting moves</source>
         <translation>Hitrost X-Y pri premikih brez rezanja</translation>
     </message>
@@ -1067,17 +1075,17 @@ izmena</translation>
 <context>
     <name>PinPad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+253" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+253"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OK</source>
         <translation>V redu</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Enter your PIN.</source>
         <translation>Vnesite PIN.</translation>
     </message>
@@ -1085,310 +1093,310 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+267" />
-        <location line="+51" />
+        <location filename="../../app/screens/recipes_screen.py" line="+291"/>
+        <location line="+51"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-47" />
+        <location line="-47"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Length L</source>
         <translation>Dolžina L</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Thickness H</source>
         <translation>Debelina H</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Length ratio L1 : L</source>
         <translation>Razmerje dolžin L1 : L</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Width ratio W1 : W</source>
         <translation>Razmerje širin W1 : W</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+59" />
+        <location line="+1"/>
+        <location line="+59"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-58" />
+        <location line="-58"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Barrel diameter</source>
         <translation>Premer soda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Barrel perimeter</source>
         <translation>Obseg soda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Note</source>
         <translation>Opomba</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>(optional)</source>
         <translation>(neobvezno)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>0 to below 1/2</source>
         <translation>od 0 do manj kot 1/2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>above 0, below 1</source>
         <translation>več kot 0, manj kot 1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>1 to %1 characters</source>
         <translation>od 1 do %1 znakov</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>optional</source>
         <translation>neobvezno</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>fixed, or from the barrel</source>
         <translation>stalen ali iz soda</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>New</source>
         <translation>Nov</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy</source>
         <translation>Kopiraj</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+384" />
+        <location line="+1"/>
+        <location line="+384"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-383" />
-        <location line="+433" />
+        <location line="-383"/>
+        <location line="+433"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-432" />
+        <location line="-432"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Save</source>
         <translation>Shrani</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+89" />
+        <location line="+1"/>
+        <location line="+89"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-88" />
+        <location line="-88"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fixed</source>
         <translation>Stalen</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>From barrel</source>
+        <location line="+1"/>
+        <source>Barrel</source>
         <translation>Iz soda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Preview</source>
         <translation>Predogled</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+239" />
+        <location line="+1"/>
+        <location line="+239"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-237" />
+        <location line="-237"/>
         <source>Head W1</source>
         <translation>Glava W1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Rise D</source>
         <translation>Dvig D</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Radius R</source>
         <translation>Polmer R</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+76"/>
         <source>Unsaved changes</source>
         <translation>Neshranjene spremembe</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Discard the changes to %1?</source>
         <translation>Zavržem spremembe recepta %1?</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+74"/>
         <source>The name %1 is already used by recipe %2.</source>
         <translation>Ime %1 že uporablja recept %2.</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+22"/>
         <source>No recipe</source>
         <translation>Ni recepta</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+133" />
+        <location line="+8"/>
+        <location line="+133"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-131" />
+        <location line="-131"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>(changed, not saved)</source>
         <translation>(spremenjen, ni shranjen)</translation>
     </message>
     <message>
-        <location line="+89" />
+        <location line="+89"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>No user account to save as.</source>
         <translation>Ni uporabniškega računa za shranjevanje.</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+3" />
+        <location line="+8"/>
+        <location line="+3"/>
         <source>Recipe not saved</source>
         <translation>Recept ni shranjen</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Recipe %1 saved.</source>
         <translation>Recept %1 je shranjen.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>Recipe %1 selected.</source>
         <translation>Recept %1 je izbran.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>New recipe %1</source>
         <translation>Nov recept %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>Name of the copy</source>
         <translation>Ime kopije</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 copy</source>
         <translation>%1 kopija</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Choose a new name.</source>
         <translation>Izberite novo ime.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Not copied</source>
         <translation>Ni kopirano</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Recipe %1 created.</source>
         <translation>Recept %1 je ustvarjen.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Delete recipe</source>
         <translation>Izbriši recept</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Delete recipe %1 (%2)? Its last version stays in the recipe history.</source>
         <translation>Izbrišem recept %1 (%2)? Njegova zadnja različica ostane v zgodovini receptov.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>Not deleted</source>
         <translation>Ni izbrisano</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Recipe %1 deleted.</source>
         <translation>Recept %1 je izbrisan.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Import recipes</source>
         <translation>Uvoz receptov</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>Import failed</source>
         <translation>Uvoz ni uspel</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>… and %1 more lines</source>
         <translation>… in še %1 vrstic</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Export recipes</source>
         <translation>Izvoz receptov</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Export failed</source>
         <translation>Izvoz ni uspel</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1 recipes written to %2.</source>
         <translation>Število receptov, zapisanih v %2: %1.</translation>
     </message>
@@ -1396,17 +1404,17 @@ izmena</translation>
 <context>
     <name>Roles</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="-7" />
+        <location filename="../../app/screens/texts.py" line="-7"/>
         <source>Operator</source>
         <translation>Operater</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Technician</source>
         <translation>Tehnik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Service</source>
         <translation>Servis</translation>
     </message>
@@ -1414,52 +1422,52 @@ izmena</translation>
 <context>
     <name>States</name>
     <message>
-        <location line="-43" />
+        <location line="-43"/>
         <source>STARTING UP</source>
         <translation>ZAGANJANJE</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>NOT HOMED</source>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>HOMING</source>
         <translation>REFERENCIRANJE</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>READY</source>
         <translation>PRIPRAVLJEN</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RUNNING</source>
         <translation>DELUJE</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>MANUAL</source>
         <translation>ROČNO</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>STOPPING</source>
         <translation>USTAVLJANJE</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>FAULT</source>
         <translation>NAPAKA</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>EMERGENCY STOP</source>
         <translation>ZASILNA ZAUSTAVITEV</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+50"/>
         <source>NO MACHINE</source>
         <translation>NI STROJA</translation>
     </message>
@@ -1467,52 +1475,52 @@ izmena</translation>
 <context>
     <name>Steps</name>
     <message>
-        <location line="-46" />
+        <location line="-46"/>
         <source>Waiting for a board</source>
         <translation>Čakam na desko</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Centering</source>
         <translation>Centriranje</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Clamping</source>
         <translation>Vpenjanje</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Measuring the width</source>
         <translation>Merjenje širine</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Starting the spindle</source>
         <translation>Zagon vretena</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cutting side A</source>
         <translation>Rezanje stranice A</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Repositioning and tilting</source>
         <translation>Premik in nagib</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cutting side B</source>
         <translation>Rezanje stranice B</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Returning</source>
         <translation>Vračanje</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unclamping</source>
         <translation>Odpenjanje</translation>
     </message>
@@ -1520,140 +1528,140 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+205" />
+        <location filename="../../app/screens/system_screen.py" line="+204"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Home position</source>
         <translation>Referenčna lega</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tool and machine</source>
-        <translation>Orodje in stroj</translation>
+        <translation>Orodje, stroj</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Start position P0</source>
         <translation>Začetna lega P0</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Automatic speeds</source>
-        <translation>Hitrosti avtomatike</translation>
+        <translation>Avtomatika</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Tool path</source>
         <translation>Pot orodja</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Axis limits</source>
         <translation>Meje osi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Jogging</source>
         <translation>Ročni premiki</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Shifts</source>
         <translation>Izmene</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Change log</source>
         <translation>Dnevnik sprememb</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+26" />
+        <location line="+1"/>
+        <location line="+26"/>
         <source>Simulation</source>
         <translation>Simulacija</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-19"/>
         <source>The system settings are locked.
 Log in as technician or service to change them.</source>
         <translation>Sistemske nastavitve so zaklenjene.
 Za spremembe se prijavite kot tehnik ali servis.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Unlock with PIN</source>
         <translation>Odkleni s PIN-om</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Lock (log out)</source>
         <translation>Zakleni (odjava)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Change log of the system parameters</source>
         <translation>Dnevnik sprememb sistemskih parametrov</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Time</source>
         <translation>Čas</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Parameter</source>
         <translation>Parameter</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Old</source>
         <translation>Staro</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>New</source>
         <translation>Novo</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>User</source>
         <translation>Uporabnik</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</source>
         <translation>Samo na simuliranem stroju: vstavite napako za preizkus alarmov, odstranite vstavljene napake (stroj ostane zaklenjen do ponastavitve) ali vstavite desko.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Clear injected faults</source>
         <translation>Odstrani vstavljene napake</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Put a board in</source>
         <translation>Vstavi desko</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+59"/>
         <source>needs %1</source>
         <translation>potrebna raven: %1</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+53"/>
         <source>Log in to change parameters.</source>
         <translation>Za spremembo parametrov se prijavite.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>%1 set to %2 (logged).</source>
         <translation>%1 nastavljen na %2 (zabeleženo).</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>Fault injected: %1</source>
         <translation>Vstavljena napaka: %1</translation>
     </message>
@@ -1661,27 +1669,27 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+110" />
+        <location filename="../../app/screens/widgets/keyboard.py" line="+110"/>
         <source>Space</source>
         <translation>Presledek</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OK</source>
         <translation>V redu</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>At most %1 characters.</source>
         <translation>Največ %1 znakov.</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+39"/>
         <source>Enter a text.</source>
         <translation>Vnesite besedilo.</translation>
     </message>

@@ -39,7 +39,10 @@ def fill_english(path: Path) -> None:
             continue
         translation.text = source.text
         translation.attrib.pop("type", None)
-    tree.write(path, encoding="utf-8", xml_declaration=True)
+    body = ET.tostring(tree.getroot(), encoding="unicode")
+    path.write_text(
+        f'<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n{body}\n', encoding="utf-8"
+    )
 
 
 def unfinished(path: Path) -> list[str]:
@@ -49,9 +52,11 @@ def unfinished(path: Path) -> list[str]:
         name = context.findtext("name", "")
         for message in context.iter("message"):
             translation = message.find("translation")
-            if translation is None or translation.get("type") in ("unfinished",) or not (
-                translation.text or ""
-            ).strip():
+            if (
+                translation is None
+                or translation.get("type") in ("unfinished",)
+                or not (translation.text or "").strip()
+            ):
                 missing.append(f"{name}: {message.findtext('source', '')}")
     return missing
 
@@ -60,18 +65,37 @@ def main() -> int:
     sys.path.insert(0, str(ROOT))
     from app.screens.catalogue_text import as_python_source
 
-    (HERE / "catalogue_strings.py").write_text(as_python_source(), encoding="utf-8")
+    generated = HERE / "catalogue_strings.py"
+    generated.write_text(as_python_source(), encoding="utf-8")
+    ruff = BIN / "ruff"
+    if ruff.exists():  # keep the generated file as the linters want it
+        subprocess.run([str(ruff), "format", "--quiet", str(generated)], check=False)
     for language in LANGUAGES:
         ts = HERE / f"stave_{language}.ts"
         subprocess.run(
-            [str(BIN / "pyside6-lupdate"), "-no-obsolete", "-locations", "relative",
-             "-source-language", "en", "-target-language", language, *sources(),
-             "-ts", str(ts)],
-            cwd=ROOT, check=True)
+            [
+                str(BIN / "pyside6-lupdate"),
+                "-no-obsolete",
+                "-locations",
+                "relative",
+                "-source-language",
+                "en",
+                "-target-language",
+                language,
+                *sources(),
+                "-ts",
+                str(ts),
+            ],
+            cwd=ROOT,
+            check=True,
+        )
         if language == "en":
             fill_english(ts)
-        subprocess.run([str(BIN / "pyside6-lrelease"), str(ts), "-qm",
-                        str(ts.with_suffix(".qm"))], cwd=ROOT, check=True)
+        subprocess.run(
+            [str(BIN / "pyside6-lrelease"), str(ts), "-qm", str(ts.with_suffix(".qm"))],
+            cwd=ROOT,
+            check=True,
+        )
     missing = unfinished(HERE / "stave_sl.ts")
     for line in missing:
         print(f"untranslated: {line}")

@@ -84,7 +84,7 @@ def machine(db_path: Path) -> Iterator[MachineLink]:
     from app.config import load_config
     from app.machine.local_link import LocalMachineLink
 
-    link = LocalMachineLink.create(load_config(), db_path, advance_per_poll_s=0.05)
+    link = LocalMachineLink.create(load_config(), db_path, advance_per_poll_s=0.25)
     yield link
     link.close()
 

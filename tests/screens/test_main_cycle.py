@@ -78,6 +78,7 @@ def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
     tap(window.overlay().buttons[0])
     wait_for(qtbot, window, lambda s: s.recipe_id == recipe_id and not s.allowed.get("Start"))
     tap(find_button(window, "startButton"))
+    wait_for(qtbot, window, lambda s: s.state is MachineState.AUTOMATIC)
     tap(find_button(window, "loadBoardButton"))
     wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A")
     tap(find_button(window, "stopButton"))

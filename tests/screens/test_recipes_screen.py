@@ -150,8 +150,8 @@ def test_export_then_import(qtbot, window, database, tap, tmp_path) -> None:
     tap(find_button(chooser, "okButton"))
     exported = list(tmp_path.glob("recipes-*.json"))
     assert len(exported) == 1
-    rows = json.loads(exported[0].read_text(encoding="utf-8"))
-    assert len(rows) == len(database.list_recipes())
+    document = json.loads(exported[0].read_text(encoding="utf-8"))
+    assert [row["name"] for row in document["recipes"]] == [r.name for r in database.list_recipes()]
 
     incoming = tmp_path / "incoming.json"
     incoming.write_text(

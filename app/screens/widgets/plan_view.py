@@ -26,6 +26,7 @@ CUT_COLOR = "#ffb000"
 RAPID_COLOR = "#6c7685"
 CUTTER_COLOR = "#ff3030"
 MIN_CUTTER_MOVE_MM = 0.05
+TICK_FONT_PX = 13
 
 
 def split_toolpath(points: Points, mask: Sequence[bool]) -> tuple[np.ndarray, np.ndarray]:
@@ -80,15 +81,11 @@ class PlanView(pg.PlotWidget):
         plot.hideButtons()
         plot.setMouseEnabled(x=False, y=False)
         plot.showGrid(x=True, y=True, alpha=0.25)
-        font = QFont("DejaVu Sans")
-        font.setPixelSize(13)
         for name in ("left", "bottom"):
             axis = plot.getAxis(name)
-            axis.setTickFont(font)
             axis.setTextPen(pg.mkPen("#aab4c3"))
             axis.setPen(pg.mkPen("#4f5b6d"))
-        plot.setLabel("bottom", "X", units="mm")
-        plot.setLabel("left", "Y", units="mm")
+        self.set_scale(1.0)
         plot.getAxis("bottom").enableAutoSIPrefix(False)
         plot.getAxis("left").enableAutoSIPrefix(False)
         self.outline_item = pg.PlotDataItem(pen=pg.mkPen(OUTLINE_COLOR, width=2))
@@ -113,6 +110,17 @@ class PlanView(pg.PlotWidget):
         self.plan_id = 0
         self.updates = 0  # how many times data was set (the soak test counts them)
 
+    def set_scale(self, scale: float) -> None:
+        """Axis fonts for the theme's scale (readable at arm's length on every panel)."""
+        plot = self.getPlotItem()
+        font = QFont("DejaVu Sans")
+        font.setPixelSize(round(TICK_FONT_PX * scale))
+        for name in ("left", "bottom"):
+            plot.getAxis(name).setTickFont(font)
+        style = {"color": "#aab4c3", "font-size": f"{round(TICK_FONT_PX * scale)}px"}
+        plot.setLabel("bottom", "X", units="mm", **style)
+        plot.setLabel("left", "Y", units="mm", **style)
+
     def set_plan(self, plan: PlanPreview | None) -> None:
         """Draw a machine plan (or clear the view for None)."""
         if plan is None:
@@ -130,7 +138,8 @@ class PlanView(pg.PlotWidget):
         self.cut_item.setData(cut[:, 0], cut[:, 1], connect="finite")
         self.rapid_item.setData(rapid[:, 0], rapid[:, 1], connect="finite")
         self.updates += 3
-        everything = [a for a in (outline_xy, cut, rapid) if len(a)]
+        # Frame the work: the stave and the cut (the travel from home may leave the view).
+        everything = [a for a in (outline_xy, cut) if len(a)] or [a for a in (rapid,) if len(a)]
         if not everything:
             self.enableAutoRange()
             return
@@ -138,7 +147,7 @@ class PlanView(pg.PlotWidget):
         finite = stacked[np.isfinite(stacked).all(axis=1)]
         x_low, y_low = finite.min(axis=0)
         x_high, y_high = finite.max(axis=0)
-        self.setRange(xRange=(x_low, x_high), yRange=(y_low, y_high), padding=0.06)
+        self.setRange(xRange=(x_low, x_high), yRange=(y_low, y_high), padding=0.08)
 
     def set_cutter(self, x_mm: float, y_mm: float) -> None:
         """Move the cutter marker (only when it moved enough to be seen)."""
