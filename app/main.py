@@ -89,6 +89,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ConfigError as exc:
         print(f"stave: configuration error: {exc}", file=sys.stderr)
         return 2
+    if args.screenshots is not None:
+        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    problem = display_problem()
+    if problem:
+        print(f"stave: {problem}", file=sys.stderr)
+        return 2
     from app.logging_setup import setup_logging
 
     log_file = setup_logging(config.log_dir, config.log_level)
@@ -99,12 +105,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         config.gauge,
         log_file,
     )
-    if args.screenshots is not None:
-        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-    problem = display_problem()
-    if problem:
-        print(f"stave: {problem}", file=sys.stderr)
-        return 2
 
     from app.data.database import Database, default_database_path
 
