@@ -320,13 +320,17 @@ def check_feedback(
     axes: Mapping[str, AxisConfig],
     *,
     motion_active: bool = True,
+    previous_setpoint: Mapping[str, float] | None = None,
 ) -> list[Violation]:
     """Everything that must stop the motion this period, per axis (pure function).
 
     Checked for every configured axis: feedback present; drive not faulted; drive enabled
     (only while ``motion_active``: a trajectory or jog runs); |following error| within
     ``following_error_limit``; neither limit switch active; the setpoint (if given) within
-    the soft limits [min_position, max_position]."""
+    the soft limits [min_position, max_position], except (with ``previous_setpoint``) a
+    setpoint outside them that is nearer the range than the previous one: the move back
+    into the range from an axis that stands outside (after homing onto a switch beyond the
+    soft limit, after a trip)."""
     violations: list[Violation] = []
     for name, config in axes.items():
         fb = feedback.get(name)
@@ -397,7 +401,9 @@ def check_feedback(
             )
         if setpoint is not None and name in setpoint:
             target = setpoint[name]
-            if not config.min_position <= target <= config.max_position:
+            outside = _outside(target, config)
+            before = None if previous_setpoint is None else previous_setpoint.get(name)
+            if outside > 0.0 and (before is None or outside > _outside(before, config)):
                 bound = config.max_position if target > config.max_position else config.min_position
                 violations.append(
                     Violation(
@@ -410,3 +416,8 @@ def check_feedback(
                     )
                 )
     return violations
+
+
+def _outside(position: float, config: AxisConfig) -> float:
+    """How far ``position`` lies outside the soft limits (0 inside)."""
+    return max(config.min_position - position, position - config.max_position, 0.0)

@@ -276,3 +276,28 @@ def test_a_setpoint_beyond_the_soft_limit_is_a_violation() -> None:
     assert [(v.axis, v.kind, v.limit) for v in violations] == [
         ("X", ViolationKind.SOFT_LIMIT, CONFIG.axes["X"].max_position)
     ]
+
+
+def test_a_setpoint_standing_or_moving_back_into_the_soft_limits_is_no_violation() -> None:
+    low = CONFIG.axes["X"].min_position
+    inward = check_feedback(
+        HEALTHY,
+        {"X": low - 0.01, "Y": 0.0, "Z": 0.0},
+        CONFIG.axes,
+        previous_setpoint={"X": low - 0.02, "Y": 0.0, "Z": 0.0},
+    )
+    assert inward == []
+    outward = check_feedback(
+        HEALTHY,
+        {"X": low - 0.02, "Y": 0.0, "Z": 0.0},
+        CONFIG.axes,
+        previous_setpoint={"X": low - 0.01, "Y": 0.0, "Z": 0.0},
+    )
+    assert [(v.axis, v.kind) for v in outward] == [("X", ViolationKind.SOFT_LIMIT)]
+    still = check_feedback(
+        HEALTHY,
+        {"X": low - 0.02, "Y": 0.0, "Z": 0.0},
+        CONFIG.axes,
+        previous_setpoint={"X": low - 0.02, "Y": 0.0, "Z": 0.0},
+    )
+    assert still == []
