@@ -82,13 +82,14 @@ class MachineSettings:
 def load_machine_settings(config_path: str | None) -> MachineSettings:
     """The process parameters and limits: the one place that knows where they come from.
 
-    Without a path: the defaults of this module. With one: `app.config.load_config(path)`
-    (imported only then, so a plain `stave solve` reads no file), converted by
-    `settings_from_config`; a file that cannot be read or is invalid is a CliInputError.
+    Without a path: the shipped default configuration. With one: that file, read by
+    `app.config.load_config` and converted by `settings_from_config`; a file that cannot be
+    read or is invalid is a CliInputError.
     """
+    from app.config import default_config_path, load_config
+
     if config_path is None:
-        return MachineSettings(process=dict(PROCESS_DEFAULTS), limits=StaveLimits())
-    from app.config import load_config  # the file reader, only when a file is asked for
+        config_path = str(default_config_path())  # the shipped machine.toml
 
     try:
         config = load_config(config_path)

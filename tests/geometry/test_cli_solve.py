@@ -183,7 +183,7 @@ def test_config_file_travel_limits_are_checked(capsys, tmp_path):
     assert main([*EXAMPLE_ARGS, "--config", str(config)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1
-    assert "x_mm = 1240.000 is out of range: allowed -5 <= X <= 1000 mm" in err
+    assert "x_mm = 1190.000 is out of range: allowed -5 <= X <= 1000 mm" in err
 
 
 def test_config_file_process_values_are_used(capsys, tmp_path):
