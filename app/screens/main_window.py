@@ -24,6 +24,7 @@ from app.screens.chrome import AlarmBanner, NavBar, TopBar
 from app.screens.i18n import LANGUAGES, LanguageManager
 from app.screens.main_screen import MainScreen
 from app.screens.manual_screen import ManualScreen
+from app.screens.pin_check import PinChecker
 from app.screens.poller import SnapshotPoller
 from app.screens.recipes_screen import RecipesScreen
 from app.screens.session import Session
@@ -64,7 +65,8 @@ class MainWindow(QMainWindow):
         self.scale = 0.0
         self._shutting_down = False
         self._notice = ""
-        self.session = Session(database.authenticate, self._default_user, parent=self)
+        self.session = Session(self._default_user, parent=self)
+        self.pin_checker = PinChecker(database.path, parent=self)
 
         self.host = QWidget()
         self.host.setObjectName("centralHost")
@@ -196,21 +198,26 @@ class MainWindow(QMainWindow):
         """Open the PIN pad; a PIN below ``required`` is refused with a message."""
         pad = PinPad(title)
 
-        def entered(pin: str) -> None:
-            user = self.database.authenticate(pin)
-            if user is None:
+        def checked(user: User | None, error: str) -> None:
+            pad.set_busy(False)
+            if error:
+                pad.show_error(error)
+            elif user is None:
                 pad.show_error(self.tr("Wrong PIN."))
-                return
-            if user.role < required:
+            elif user.role < required:
                 pad.show_error(
                     self.tr("This needs the %1 level; %2 is %3.")
                     .replace("%1", role_text(required))
                     .replace("%2", user.name)
                     .replace("%3", role_text(user.role))
                 )
-                return
-            self.session.set_user(user)
-            pad.accept()
+            else:
+                self.session.set_user(user)
+                pad.accept()
+
+        def entered(pin: str) -> None:
+            pad.set_busy(True, self.tr("Checking…"))
+            self.pin_checker.check(pin, checked)
 
         pad.pinEntered.connect(entered)
         self.context.open(pad)
@@ -342,4 +349,5 @@ class MainWindow(QMainWindow):
             return
         self.poller.stop()
         self._clock_timer.stop()
+        self.pin_checker.wait()
         super().closeEvent(event)

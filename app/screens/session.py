@@ -16,7 +16,6 @@ from app.data.users import Role, User
 
 IDLE_LOGOUT_S = 600.0
 
-Authenticate = Callable[[str], "User | None"]
 DefaultUser = Callable[[], "User | None"]
 
 
@@ -27,13 +26,11 @@ class Session(QObject):
 
     def __init__(
         self,
-        authenticate: Authenticate,
         default_user: DefaultUser,
         idle_logout_s: float = IDLE_LOGOUT_S,
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
-        self._authenticate = authenticate
         self._default_user = default_user
         self.user: User | None = None
         self._idle = QTimer(self)
@@ -56,13 +53,6 @@ class Session(QObject):
     def can(self, role: Role) -> bool:
         """True if the current level is at least ``role``."""
         return self.role >= role
-
-    def login(self, pin: str) -> User | None:
-        """Log in with a PIN; None (and no change) when no user has it."""
-        user = self._authenticate(pin)
-        if user is not None:
-            self.set_user(user)
-        return user
 
     def set_user(self, user: User) -> None:
         """Make ``user`` (already authenticated) the logged-in one."""

@@ -650,18 +650,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+157" />
+        <location filename="../../app/screens/main_window.py" line="+159" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+119" />
+        <location line="+124" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-112" />
+        <location line="-117" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -682,17 +682,22 @@ shift</translation>
         <translation>Log in: enter your PIN</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>Wrong PIN.</source>
         <translation>Wrong PIN.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>This needs the %1 level; %2 is %3.</source>
         <translation>This needs the %1 level; %2 is %3.</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+10" />
+        <source>Checking…</source>
+        <translation>Checking…</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>This needs the %1 level: enter a PIN</source>
         <translation>This needs the %1 level: enter a PIN</translation>
     </message>
@@ -1085,7 +1090,7 @@ shift</translation>
         <translation>OK</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+38" />
         <source>Enter your PIN.</source>
         <translation>Enter your PIN.</translation>
     </message>

@@ -51,3 +51,13 @@ def home_from_main_screen(qtbot, window: MainWindow, tap) -> MachineSnapshot:
         tap(home)
         snapshot = wait_for(qtbot, window, lambda s: s.state is MachineState.READY and s.all_homed)
     return snapshot
+
+
+def enter_pin(qtbot, window: MainWindow, tap, pin: str) -> None:
+    """Type a PIN on the open PIN pad, press OK and wait for the check (a worker thread)."""
+    pad = window.overlay()
+    assert pad is not None and pad.objectName() == "pinPad"
+    for key in pin:
+        tap(find_button(pad, f"key_{key}"))
+    tap(find_button(pad, "okButton"))
+    qtbot.waitUntil(lambda: not window.pin_checker.busy, timeout=10_000)

@@ -11,7 +11,7 @@ from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
 from app.screens.widgets.dialogs import ChoiceOverlay
 from app.screens.widgets.keypad import NumberKeypad, PinPad
-from tests.screens.helpers import find_button, wait_for
+from tests.screens.helpers import enter_pin, find_button, wait_for
 
 
 def keys(tap, overlay, text: str) -> None:
@@ -19,12 +19,10 @@ def keys(tap, overlay, text: str) -> None:
         tap(find_button(overlay, f"key_{key}"))
 
 
-def log_in(window, tap, pin: str) -> None:
+def log_in(qtbot, window, tap, pin: str) -> None:
     tap(find_button(window, "userButton"))
-    pad = window.overlay()
-    assert isinstance(pad, PinPad)
-    keys(tap, pad, pin)
-    tap(find_button(pad, "okButton"))
+    assert isinstance(window.overlay(), PinPad)
+    enter_pin(qtbot, window, tap, pin)
     assert window.overlay() is None
 
 
@@ -89,7 +87,7 @@ def test_leaving_the_manual_screen_leaves_manual_mode(qtbot, window, tap) -> Non
 
 
 def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
-    log_in(window, tap, "1234")
+    log_in(qtbot, window, tap, "1234")
     assert window.session.role is Role.TECHNICIAN
     tap(find_button(window, "nav_system"))
     tap(find_button(window, "group_simulation"))
@@ -152,11 +150,10 @@ def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -
     assert screen.body.currentWidget() is screen.locked_page
     tap(find_button(window, "unlockButton"))
     pad = window.overlay()
-    keys(tap, pad, "0000")
-    tap(find_button(pad, "okButton"))
+    enter_pin(qtbot, window, tap, "0000")
     assert pad.is_open and "Technician" in pad.error_label.text()
-    keys(tap, pad, "1234")
-    tap(find_button(pad, "okButton"))
+    enter_pin(qtbot, window, tap, "1234")
+    assert not pad.is_open
     assert screen.body.currentWidget() is screen.settings_page
 
     tap(find_button(window, "group_tool"))

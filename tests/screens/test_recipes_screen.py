@@ -9,7 +9,7 @@ from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
-from tests.screens.helpers import find_button
+from tests.screens.helpers import enter_pin, find_button
 
 
 def open_recipes(window, tap):
@@ -129,11 +129,9 @@ def test_copy_then_delete_with_confirmation_and_technician_pin(
     tap(find_button(window, "deleteRecipe"))
     pad = window.overlay()
     assert isinstance(pad, PinPad)  # an operator may not delete: a technician PIN is asked
-    keys(tap, pad, "0000")
-    tap(find_button(pad, "okButton"))
+    enter_pin(qtbot, window, tap, "0000")
     assert "Technician" in pad.error_label.text()
-    keys(tap, pad, "1234")
-    tap(find_button(pad, "okButton"))
+    enter_pin(qtbot, window, tap, "1234")
     confirm = window.overlay()
     assert isinstance(confirm, ConfirmOverlay)
     assert copy.name in confirm.message_label.text()

@@ -497,6 +497,12 @@ class PinPad(Overlay):
         else:
             super().keyPressEvent(event)
 
+    def set_busy(self, busy: bool, text: str = "") -> None:
+        """While the PIN is being checked: keys off, a word on what is happening."""
+        for button in (*self.keys.values(), self.ok_button, self.backspace_button):
+            button.setEnabled(not busy)
+        self.error_label.setText(text if busy else "")
+
     def show_error(self, message: str) -> None:
         """The caller refused the PIN: say why, clear it, stay open."""
         self.pin = ""
