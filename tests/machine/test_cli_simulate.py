@@ -1,0 +1,135 @@
+"""``stave simulate`` end to end, through the command-line entry point."""
+
+from __future__ import annotations
+
+import csv
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from app.cli import main
+
+BARRIQUE = "Barrique 225 l Bordeaux"
+
+
+def simulate(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    code = main(["simulate", *args])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_json_for_two_cycles_and_a_trace(capsys, tmp_path: Path) -> None:
+    trace = tmp_path / "trace.csv"
+    code, out, _ = simulate(
+        capsys,
+        "--recipe",
+        BARRIQUE,
+        "--width",
+        "150",
+        "--cycles",
+        "2",
+        "--json",
+        "--trace",
+        str(trace),
+    )
+    assert code == 0
+    result = json.loads(out)
+    assert result["pieces"] == 2 and result["final_state"] == "ready"
+    assert result["restarted"] is False
+    assert set(result["params"]) == {
+        "P0",
+        "tool_radius_mm",
+        "machine_height_mm",
+        "tilt_deg",
+        "length_mm",
+        "length_ratio",
+        "width_ratio",
+        "feed_mm_s",
+        "accel_mm_s2",
+    }
+    assert result["params"]["length_mm"] == 950.0
+    for cycle in result["cycles"]:
+        assert cycle["result"] == "ok" and cycle["alarms"] == []
+        assert 5.0 < cycle["D_mm"] < 15.0 and cycle["R_mm"] > 1000.0
+        assert 0.0 < cycle["cycle_time_s"] < 90.0
+        assert cycle["cut_time_s"]["A"] > 0 and cycle["cut_length_mm"]["B"] > 950.0
+        assert 0.0 < cycle["max_contour_error_mm"] < 0.1
+    with trace.open() as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == ["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act", "z_act"]
+    times = [float(r[0]) for r in rows[1:]]
+    assert times == sorted(times) and len(times) > 10_000
+    assert {r[1] for r in rows[1:]} >= {"homing", "ready", "automatic"}
+
+
+def test_injected_fault_ends_in_alarm_and_nothing_restarts(capsys) -> None:
+    code, out, _ = simulate(
+        capsys,
+        "--recipe",
+        BARRIQUE,
+        "--width",
+        "150",
+        "--json",
+        "--inject",
+        "drive_fault:Y@cutting_b",
+    )
+    assert code == 0
+    result = json.loads(out)
+    assert result["final_state"] == "error" and result["pieces"] == 0
+    assert result["restarted"] is False
+    assert result["cycles"][0]["result"] == "alarm" and "E010" in result["cycles"][0]["alarms"]
+
+
+def test_recipe_file(capsys, tmp_path: Path) -> None:
+    recipe = {
+        "name": "Test 900",
+        "length_mm": 900,
+        "thickness_mm": 27,
+        "length_ratio": "1/5",
+        "width_ratio": "3/4",
+        "tilt_deg": 6.0,
+    }
+    path = tmp_path / "recipe.json"
+    path.write_text(json.dumps(recipe))
+    code, out, _ = simulate(capsys, "--recipe-file", str(path), "--width", "120", "--json")
+    assert code == 0
+    result = json.loads(out)
+    assert result["pieces"] == 1 and result["params"]["tilt_deg"] == 6.0
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--recipe", "Nope", "--width", "150"], "is not in the database"),
+        (
+            ["--recipe", BARRIQUE, "--width", "150", "--inject", "meteor@cutting_a"],
+            "kind 'meteor' is not allowed",
+        ),
+        (
+            ["--recipe", BARRIQUE, "--width", "150", "--inject", "estop@lunch"],
+            "step 'lunch' is not allowed",
+        ),
+        (["--recipe", BARRIQUE, "--width", "150", "--cycles", "0"], "--cycles 0"),
+    ],
+)
+def test_bad_input_is_one_line_and_exit_2(capsys, args: list[str], message: str) -> None:
+    code, _, err = simulate(capsys, *args)
+    assert code == 2
+    assert message in err and err.count("\n") == 1
+
+
+def test_console_script_runs_without_traceback(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.json"
+    bad.write_text("{not json")
+    result = subprocess.run(
+        [sys.executable, "-m", "app.cli", "simulate", "--recipe-file", str(bad), "--width", "150"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 2
+    assert "Traceback" not in result.stderr and "--recipe-file" in result.stderr
