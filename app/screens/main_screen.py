@@ -110,7 +110,8 @@ class MainScreen(Screen):
         self.reset_button.clicked.connect(lambda: self.context.send(Reset()))
         self.load_button = _button("loadBoardButton")
         self.load_button.clicked.connect(lambda: self.context.send(LoadBoard()))
-        row = QHBoxLayout()
+        row = QVBoxLayout()  # one above the other: full width for the longer languages
+        row.setSpacing(8)
         row.addWidget(self.home_button)
         row.addWidget(self.reset_button)
 

@@ -173,6 +173,8 @@ class ManualScreen(Screen):
 
         actions = QGridLayout()
         actions.setSpacing(8)
+        # Homing: a caption and one button per axis (short labels fit every language).
+        self.home_caption = styled_label("", "caption")
         self.home_buttons: dict[str, QPushButton] = {}
         for column, axis in enumerate(("X", "Y", "Z", "")):
             button = _button(f"home{axis or 'All'}", "primary")
@@ -191,6 +193,7 @@ class ManualScreen(Screen):
         right.addWidget(speed_panel)
         right.addWidget(self.step_caption)
         right.addLayout(steps)
+        right.addWidget(self.home_caption)
         right.addLayout(actions)
         right.addStretch(1)
 
@@ -220,10 +223,12 @@ class ManualScreen(Screen):
         self.speed_caption.setText(self.tr("Jog speed and acceleration"))
         self.speed_headers[0].setText(self.tr("Speed"))
         self.speed_headers[1].setText(self.tr("Acceleration"))
-        self.home_buttons["X"].setText(self.tr("Home X"))
-        self.home_buttons["Y"].setText(self.tr("Home Y"))
-        self.home_buttons["Z"].setText(self.tr("Home Z"))
-        self.home_buttons[""].setText(self.tr("Home all"))
+        self.home_caption.setText(self.tr("Home (find the reference position)"))
+        for axis in ("X", "Y", "Z"):
+            self.home_buttons[axis].setText(axis)
+            self.home_buttons[axis].setToolTip(self.tr("Home %1").replace("%1", axis))
+        self.home_buttons[""].setText(self.tr("All"))
+        self.home_buttons[""].setToolTip(self.tr("Home all axes"))
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
         if self.snapshot is None:

@@ -124,7 +124,12 @@ def _homed_and_ready(driver: Driver) -> None:
 
 
 def render_screenshots(
-    out_dir: Path, size: tuple[int, int], link: MachineLink, database: Database
+    out_dir: Path,
+    size: tuple[int, int],
+    link: MachineLink,
+    database: Database,
+    *,
+    language: str = "en",
 ) -> list[Path]:
     """Drive the machine through ``link`` and save one PNG per screen (plus the keypad) in
     ``out_dir``; returns the files written. Raises TimeoutError naming the step the machine
@@ -136,7 +141,7 @@ def render_screenshots(
     written: list[Path] = []
     with quiet_offscreen_noise():
         app = ensure_application()
-        window = create_main_window(link, database)
+        window = create_main_window(link, database, language=language)
         assert isinstance(window, MainWindow)
         window.poller.stop()  # the driver polls, so the pictures follow the machine exactly
         window.resize(*size)

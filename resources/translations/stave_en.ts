@@ -513,7 +513,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+198" />
+        <location filename="../../app/screens/main_screen.py" line="+199" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -763,7 +763,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+212" />
+        <location filename="../../app/screens/manual_screen.py" line="+215" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -809,23 +809,23 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Home X</source>
-        <translation>Home X</translation>
+        <source>Home (find the reference position)</source>
+        <translation>Home (find the reference position)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Home %1</source>
+        <translation>Home %1</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Home Y</source>
-        <translation>Home Y</translation>
+        <source>All</source>
+        <translation>All</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Home Z</source>
-        <translation>Home Z</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Home all</source>
-        <translation>Home all</translation>
+        <source>Home all axes</source>
+        <translation>Home all axes</translation>
     </message>
     <message>
         <location line="+2" />

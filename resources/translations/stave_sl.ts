@@ -513,7 +513,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+198"/>
+        <location filename="../../app/screens/main_screen.py" line="+199"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -763,7 +763,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+212"/>
+        <location filename="../../app/screens/manual_screen.py" line="+215"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -809,23 +809,23 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Home X</source>
-        <translation>Referenciraj X</translation>
+        <source>Home (find the reference position)</source>
+        <translation>Referenciranje (iskanje referenčne lege)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Home %1</source>
+        <translation>Referenciraj %1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Home Y</source>
-        <translation>Referenciraj Y</translation>
+        <source>All</source>
+        <translation>Vse</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Home Z</source>
-        <translation>Referenciraj Z</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Home all</source>
-        <translation>Referenciraj vse</translation>
+        <source>Home all axes</source>
+        <translation>Referenciraj vse osi</translation>
     </message>
     <message>
         <location line="+2"/>

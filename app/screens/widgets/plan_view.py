@@ -80,7 +80,9 @@ class PlanView(pg.PlotWidget):
         plot.setMenuEnabled(False)
         plot.hideButtons()
         plot.setMouseEnabled(x=False, y=False)
-        plot.showGrid(x=True, y=True, alpha=0.25)
+        # No grid: with a grid the axes span the plot area and repaint (text and all) every
+        # time the cutter moves; the axes alone are cheap and enough to read the plan.
+        plot.showGrid(x=False, y=False)
         for name in ("left", "bottom"):
             axis = plot.getAxis(name)
             axis.setTextPen(pg.mkPen("#aab4c3"))
