@@ -1,0 +1,55 @@
+"""The application entry points: kiosk window, refresh rate, a dead machine, screenshots."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QImage
+
+from app.screens.application import create_main_window
+from app.screens.main_window import SCREEN_KEYS, MainWindow
+from app.screens.poller import REFRESH_HZ
+from app.screens.screenshots import render_screenshots
+from app.screens.widgets.dialogs import ConfirmOverlay
+
+
+def test_kiosk_window_is_frameless_and_closes_only_through_shut_down(qtbot, machine,
+                                                                    database) -> None:
+    window = create_main_window(machine, database, kiosk=True)
+    assert isinstance(window, MainWindow)
+    qtbot.addWidget(window)
+    assert window.windowFlags() & Qt.WindowType.FramelessWindowHint
+    window.show()
+    window.close()  # Alt+F4 or a window manager: refused, the confirmation opens instead
+    assert window.isVisible()
+    overlay = window.overlay()
+    assert isinstance(overlay, ConfirmOverlay)
+    with qtbot.waitSignal(window.shutdownRequested):
+        overlay.accept()
+    assert not window.isVisible()
+    assert not machine.alive()
+
+
+def test_the_screens_refresh_at_least_20_times_a_second() -> None:
+    assert REFRESH_HZ >= 20
+
+
+def test_a_dead_machine_is_shown(qtbot, window, machine) -> None:
+    machine.close()
+    qtbot.waitUntil(lambda: window.poller.lost, timeout=5000)
+    assert window.top_bar.state_label.text() == "NO MACHINE"
+    assert window.top_bar.message_label.text() == "The machine is not running."
+
+
+def test_screenshots_of_every_screen_in_a_realistic_state(qtbot, machine, database,
+                                                         tmp_path) -> None:
+    files = render_screenshots(tmp_path / "shots", (1024, 768), machine, database)
+    names = [f.name for f in files]
+    assert names == ["01-main-running.png", "02-recipes.png", "03-recipes-keypad.png",
+                     "04-system.png", "05-main-alarm.png", "06-alarms.png", "07-manual.png"]
+    shown = {name.split("-", 1)[1].split("-")[0].removesuffix(".png") for name in names}
+    assert set(SCREEN_KEYS) <= shown
+    for path in files:
+        image = QImage(str(path))
+        assert (image.width(), image.height()) == (1024, 768), path.name
+    snapshot = machine.latest()
+    assert snapshot is not None and snapshot.pieces_total >= 1  # a board was really cut
