@@ -12,8 +12,9 @@ from app.screens.screenshots import render_screenshots
 from app.screens.widgets.dialogs import ConfirmOverlay
 
 
-def test_kiosk_window_is_frameless_and_closes_only_through_shut_down(qtbot, machine,
-                                                                    database) -> None:
+def test_kiosk_window_is_frameless_and_closes_only_through_shut_down(
+    qtbot, machine, database
+) -> None:
     window = create_main_window(machine, database, kiosk=True)
     assert isinstance(window, MainWindow)
     qtbot.addWidget(window)
@@ -40,12 +41,20 @@ def test_a_dead_machine_is_shown(qtbot, window, machine) -> None:
     assert window.top_bar.message_label.text() == "The machine is not running."
 
 
-def test_screenshots_of_every_screen_in_a_realistic_state(qtbot, machine, database,
-                                                         tmp_path) -> None:
+def test_screenshots_of_every_screen_in_a_realistic_state(
+    qtbot, machine, database, tmp_path
+) -> None:
     files = render_screenshots(tmp_path / "shots", (1024, 768), machine, database)
     names = [f.name for f in files]
-    assert names == ["01-main-running.png", "02-recipes.png", "03-recipes-keypad.png",
-                     "04-system.png", "05-main-alarm.png", "06-alarms.png", "07-manual.png"]
+    assert names == [
+        "01-main-running.png",
+        "02-recipes.png",
+        "03-recipes-keypad.png",
+        "04-system.png",
+        "05-main-alarm.png",
+        "06-alarms.png",
+        "07-manual.png",
+    ]
     shown = {name.split("-", 1)[1].split("-")[0].removesuffix(".png") for name in names}
     assert set(SCREEN_KEYS) <= shown
     for path in files:
