@@ -126,7 +126,7 @@ class MainWindow(QMainWindow):
 
     # -- screens -----------------------------------------------------------------------------
 
-    def screen(self, key: str) -> Screen:
+    def page(self, key: str) -> Screen:
         return self.screens[key]
 
     @property

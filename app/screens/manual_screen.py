@@ -89,16 +89,16 @@ class ManualScreen(Screen):
         cross = QGridLayout()
         cross.setSpacing(8)
         for axis, direction, symbol, row, column in JOG_KEYS:
-            button = HoldButton(symbol)
-            button.setObjectName(f"jog_{axis}{'plus' if direction > 0 else 'minus'}")
-            button.setProperty("kind", "jog")
-            button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-            button.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-            button.holdStarted.connect(lambda a=axis, d=direction: self.jog_pressed(a, d))
-            button.holdRefresh.connect(lambda a=axis, d=direction: self.jog_refresh(a, d))
-            button.holdEnded.connect(lambda a=axis: self.jog_released(a))
-            cross.addWidget(button, row, column)
-            self.jog_buttons[(axis, direction)] = button
+            jog = HoldButton(symbol)
+            jog.setObjectName(f"jog_{axis}{'plus' if direction > 0 else 'minus'}")
+            jog.setProperty("kind", "jog")
+            jog.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+            jog.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
+            jog.holdStarted.connect(lambda a=axis, d=direction: self.jog_pressed(a, d))
+            jog.holdRefresh.connect(lambda a=axis, d=direction: self.jog_refresh(a, d))
+            jog.holdEnded.connect(lambda a=axis: self.jog_released(a))
+            cross.addWidget(jog, row, column)
+            self.jog_buttons[(axis, direction)] = jog
         self.xy_label = styled_label("X-Y", "caption")
         self.xy_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
         cross.addWidget(self.xy_label, 1, 1)
@@ -347,9 +347,9 @@ class ManualScreen(Screen):
                 set_text(self.speed_fields[(group, column)], text)
 
         home_reason = refusal(snapshot, "Home")
-        for button in self.home_buttons.values():
-            button.setEnabled(not home_reason)
-            button.setToolTip(home_reason)
+        for home in self.home_buttons.values():
+            home.setEnabled(not home_reason)
+            home.setToolTip(home_reason)
 
         clamps_reason = refusal(snapshot, "SetClamps")
         self.clamps_button.setEnabled(not clamps_reason)

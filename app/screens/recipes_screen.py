@@ -260,9 +260,9 @@ class RecipesScreen(Screen):
         for index, key in enumerate(("head", "d", "r", "tilt")):
             caption = styled_label("", "caption")
             value = styled_label("—", "value", f"preview_{key}")
-            row, column = 2 * (index // 2), index % 2
-            results.addWidget(caption, row, column)
-            results.addWidget(value, row + 1, column)
+            grid_row, grid_column = 2 * (index // 2), index % 2
+            results.addWidget(caption, grid_row, grid_column)
+            results.addWidget(value, grid_row + 1, grid_column)
             self.result_labels[key] = value
             self.result_labels[key + "_caption"] = caption
         self.preview_errors = styled_label("", "error", "previewErrors")
@@ -652,6 +652,7 @@ class RecipesScreen(Screen):
             and self.snapshot.recipe_id == saved.id
             and not refusal(self.snapshot, "SelectRecipe")
         ):
+            assert saved.id is not None  # stored recipes have an id
             self.context.send(SelectRecipe(saved.id))  # the machine reloads it
 
     def discard(self) -> None:

@@ -76,7 +76,8 @@ class Driver:
     ) -> MachineSnapshot:
         deadline = time.monotonic() + timeout_s
         while True:
-            seq = self.snapshot().seq if self.snapshot() is not None else -1
+            before = self.snapshot()
+            seq = before.seq if before is not None else -1
             self.window.poller.poll()
             self.app.processEvents()
             snapshot = self.snapshot()
@@ -183,7 +184,7 @@ def render_screenshots(
             shoot("main-running")
 
             window.show_screen("recipes")
-            screen = window.screen("recipes")
+            screen = window.page("recipes")
             shoot("recipes")
             screen.edit_field("thickness_mm")  # type: ignore[attr-defined]
             overlay = window.overlay()
@@ -198,7 +199,7 @@ def render_screenshots(
             if technician is not None:
                 window.session.set_user(technician)
             window.show_screen("system")
-            system = window.screen("system")
+            system = window.page("system")
             system.show_group("motion")  # type: ignore[attr-defined]
             shoot("system")
             window.session.logout()

@@ -289,7 +289,7 @@ class SystemScreen(Screen):
             widget = item.widget() if item is not None else None
             if widget is not None:
                 widget.hide()  # at once: deleteLater waits for the event loop
-                widget.setParent(None)  # type: ignore[call-overload]
+                widget.setParent(None)
                 widget.deleteLater()
         self.param_buttons.clear()
         self.param_labels.clear()

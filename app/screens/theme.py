@@ -105,7 +105,7 @@ def apply_palette(app: QApplication) -> None:
         palette.setColor(role, QColor(colour))
     app.setPalette(palette)
     font = QFont("DejaVu Sans")
-    font.setPixelSize(_SIZES_PX["fs_normal"])
+    font.setPixelSize(round(_SIZES_PX["fs_normal"]))
     app.setFont(font)
 
 

@@ -344,7 +344,7 @@
         <translation>File name</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>A file name cannot contain '/'.</source>
         <translation>A file name cannot contain '/'.</translation>
     </message>
@@ -1196,18 +1196,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+384" />
+        <location line="+385" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-383" />
-        <location line="+433" />
+        <location line="-384" />
+        <location line="+434" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-432" />
+        <location line="-433" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1285,12 +1285,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+133" />
+        <location line="+134" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-131" />
+        <location line="-132" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -1321,7 +1321,7 @@ shift</translation>
         <translation>Recipe %1 saved.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
         <source>Recipe %1 selected.</source>
         <translation>Recipe %1 selected.</translation>
     </message>

@@ -344,7 +344,7 @@
         <translation>Ime datoteke</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>A file name cannot contain &apos;/&apos;.</source>
         <translation>Ime datoteke ne sme vsebovati &apos;/&apos;.</translation>
     </message>
@@ -1196,18 +1196,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+384"/>
+        <location line="+385"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-383"/>
-        <location line="+433"/>
+        <location line="-384"/>
+        <location line="+434"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-433"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1285,12 +1285,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+133"/>
+        <location line="+134"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-131"/>
+        <location line="-132"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -1321,7 +1321,7 @@ izmena</translation>
         <translation>Recept %1 je shranjen.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Recipe %1 selected.</source>
         <translation>Recept %1 je izbran.</translation>
     </message>

@@ -15,7 +15,7 @@ def test_start_is_refused_with_a_reason_until_homed(window) -> None:
     if not snapshot.all_homed:
         assert not start.isEnabled()
         assert start.toolTip()  # says why
-        main = window.screen("main")
+        main = window.page("main")
         assert main.hint_label.text() == start.toolTip()
         for axis in ("X", "Y"):
             if not snapshot.axis(axis).homed:
@@ -25,7 +25,7 @@ def test_start_is_refused_with_a_reason_until_homed(window) -> None:
 
 
 def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, tap) -> None:
-    main = window.screen("main")
+    main = window.page("main")
     home_from_main_screen(qtbot, window, tap)
     recipes = database.list_recipes()
     assert len(recipes) >= 2

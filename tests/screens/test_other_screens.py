@@ -98,7 +98,7 @@ def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
     assert window.banner.property("severity") == "fault"
 
     tap(window.banner)  # the banner leads to the Alarms screen
-    screen = window.screen("alarms")
+    screen = window.page("alarms")
     assert window.current_screen is screen
     assert screen.active_table.rowCount() == len(alarmed.alarms)
     ack = screen.ack_button(alarm.alarm_id)
@@ -146,7 +146,7 @@ def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
 
 def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -> None:
     tap(find_button(window, "nav_system"))
-    screen = window.screen("system")
+    screen = window.page("system")
     assert screen.body.currentWidget() is screen.locked_page
     tap(find_button(window, "unlockButton"))
     pad = window.overlay()
@@ -182,7 +182,7 @@ def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -
 
 
 def test_switching_to_slovenian_retranslates_the_visible_screen(qtbot, window, tap) -> None:
-    main = window.screen("main")
+    main = window.page("main")
     assert find_button(window, "nav_recipes").text() == "Recipes"
     assert main.start_button.text().endswith("START")
     tap(find_button(window, "languageButton"))

@@ -14,7 +14,7 @@ from tests.screens.helpers import enter_pin, find_button
 
 def open_recipes(window, tap):
     tap(find_button(window, "nav_recipes"))
-    screen = window.screen("recipes")
+    screen = window.page("recipes")
     assert window.current_screen is screen
     return screen
 

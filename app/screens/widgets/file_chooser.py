@@ -186,8 +186,9 @@ class FileChooser(Overlay):
             self.name_button.setText(text)
 
         keyboard.textAccepted.connect(accepted)
-        if self.parentWidget() is not None:
-            keyboard.open_on(self.parentWidget())
+        host = self.parentWidget()
+        if host is not None:
+            keyboard.open_on(host)
 
     def _check_name(self, name: str) -> str:
         if "/" in name or name in (".", ".."):

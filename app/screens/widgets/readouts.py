@@ -7,13 +7,20 @@ the same text still costs a relayout; comparing first keeps an idle screen nearl
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QFrame, QHBoxLayout, QLabel, QVBoxLayout, QWidget
+from PySide6.QtWidgets import (
+    QAbstractButton,
+    QFrame,
+    QHBoxLayout,
+    QLabel,
+    QVBoxLayout,
+    QWidget,
+)
 
 from app.screens.formatting import format_position
 from app.screens.theme import set_style_property
 
 
-def set_text(label: QLabel, text: str) -> None:
+def set_text(label: QLabel | QAbstractButton, text: str) -> None:
     """``setText`` only when the text changed."""
     if label.text() != text:
         label.setText(text)
