@@ -105,7 +105,7 @@ class MainWindow(QMainWindow):
         self.poller.linkLost.connect(self.on_link_lost)
         self._notice_timer = QTimer(self)
         self._notice_timer.setSingleShot(True)
-        self._notice_timer.timeout.connect(self._clear_notice)
+        self._notice_timer.timeout.connect(self.clear_notice)
         self._clock_timer = QTimer(self)
         self._clock_timer.setInterval(1000)
         self._clock_timer.timeout.connect(self.top_bar.tick_clock)
@@ -173,7 +173,7 @@ class MainWindow(QMainWindow):
         self._notice_timer.start(round(NOTICE_S * 1000))
         self.top_bar.show_snapshot(self.poller.snapshot, text)
 
-    def _clear_notice(self) -> None:
+    def clear_notice(self) -> None:
         self._notice = ""
         snapshot = self.poller.snapshot
         self.top_bar.show_snapshot(snapshot, machine_text(snapshot.message) if snapshot else "")

@@ -203,6 +203,7 @@ def render_screenshots(
             system.show_group("motion")  # type: ignore[attr-defined]
             shoot("system")
             window.session.logout()
+            window.clear_notice()  # "logged out" is not part of the next pictures
 
             driver.send_and_wait(
                 InjectFault("following_error", "X"), lambda s: bool(s.alarms), "alarm raised"

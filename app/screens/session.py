@@ -2,8 +2,9 @@
 
 Why an operator by default and a timeout: at power-on the machine must be usable for
 production without typing anything, so the panel starts at operator level; a technician or
-service engineer logs in with a PIN for settings and is logged out again after a few minutes
-without a touch, so a panel left unlocked does not stay unlocked.
+service engineer logs in with a PIN for settings and is logged out again after ten minutes
+in which nobody changed screens or opened a keypad, so a panel left unlocked does not stay
+unlocked.
 """
 
 from __future__ import annotations
