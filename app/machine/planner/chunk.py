@@ -37,17 +37,11 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from ruckig import (
-    ControlInterface,
-    InputParameter,
-    Result,
-    Ruckig,
-    RuckigError,
-    Synchronization,
-)
+from ruckig import ControlInterface, InputParameter, Synchronization
 from ruckig import Trajectory as RuckigTrajectory
 
 from app.machine.planner.limits import MAX_OVERRIDE_PCT, AxisLimits
+from app.machine.planner.otg import calculate
 from app.machine.planner.path import DerivativeBounds, Path, Point
 from app.machine.planner.trajectory import Phase, PlannerError
 
@@ -261,17 +255,6 @@ def _input(chunk: Chunk, state: DofState) -> InputParameter:
     return inp
 
 
-def _calculate(inp: InputParameter, what: str) -> RuckigTrajectory:
-    trajectory = RuckigTrajectory(inp.degrees_of_freedom)
-    try:
-        result = Ruckig(inp.degrees_of_freedom).calculate(inp, trajectory)
-    except RuckigError as exc:
-        raise PlannerError(f"{what}: the trajectory generator refused it ({exc})") from exc
-    if result not in (Result.Working, Result.Finished):
-        raise PlannerError(f"{what}: the trajectory generator answered {result}")
-    return trajectory
-
-
 def plan_to_end(
     chunk: Chunk, state: DofState, override_pct: float, minimum_duration_s: float = 0.0
 ) -> RuckigTrajectory:
@@ -293,14 +276,14 @@ def plan_to_end(
     if minimum_duration_s > 0.0:
         inp.minimum_duration = minimum_duration_s
     try:
-        return _calculate(inp, f"{chunk.phase.value} move")
+        return calculate(inp, f"{chunk.phase.value} move")
     except PlannerError:
         if len(dofs) == 1:
             raise
         # Time synchronisation can fail numerically when one DOF is (almost) at its target;
         # each DOF then simply runs its own time-optimal profile.
         inp.synchronization = Synchronization.No
-        return _calculate(inp, f"{chunk.phase.value} move")
+        return calculate(inp, f"{chunk.phase.value} move")
 
 
 def plan_to_rest(chunk: Chunk, state: DofState) -> RuckigTrajectory:
@@ -315,7 +298,7 @@ def plan_to_rest(chunk: Chunk, state: DofState) -> RuckigTrajectory:
     inp.max_velocity = [d.velocity_cap for d in dofs]
     inp.target_velocity = [0.0] * len(dofs)
     inp.target_acceleration = [0.0] * len(dofs)
-    return _calculate(inp, f"stop during {chunk.phase.value}")
+    return calculate(inp, f"stop during {chunk.phase.value}")
 
 
 def state_at(trajectory: RuckigTrajectory, t_s: float) -> DofState:

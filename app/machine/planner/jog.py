@@ -24,8 +24,11 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ruckig import ControlInterface, InputParameter, Result, Ruckig, RuckigError
+from ruckig import ControlInterface, InputParameter
 from ruckig import Trajectory as RuckigTrajectory
+
+from app.machine.planner.otg import calculate
+from app.machine.planner.trajectory import PlannerError
 
 if TYPE_CHECKING:
     from app.config import AxisConfig
@@ -293,14 +296,10 @@ class Jogger:
         return inp
 
     def _start(self, inp: InputParameter) -> None:
-        trajectory = RuckigTrajectory(1)
         try:
-            result = Ruckig(1).calculate(inp, trajectory)
-        except RuckigError as exc:
-            raise ValueError(f"axis {self.axis}: jog cannot be planned ({exc})") from exc
-        if result not in (Result.Working, Result.Finished):
-            raise ValueError(f"axis {self.axis}: jog cannot be planned ({result})")
-        self._trajectory = trajectory
+            self._trajectory = calculate(inp, f"axis {self.axis}: jog")
+        except PlannerError as exc:
+            raise ValueError(str(exc)) from exc
         self._t_s = 0.0
 
     def _plan_to(self, target: float) -> None:

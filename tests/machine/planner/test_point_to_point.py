@@ -10,6 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.machine.planner.limits import AxisLimits, MotionLimits
 from app.machine.planner.point_to_point import SAME_POSITION_MM, plan_point_to_point
 from app.machine.planner.trajectory import Phase, PlannerError
 
@@ -67,3 +68,15 @@ def test_a_tilt_only_move_keeps_x_y_still() -> None:
 def test_bad_positions_are_named(bad) -> None:
     with pytest.raises(PlannerError, match="start_xyz"):
         plan_point_to_point(bad, (1.0, 1.0, 1.0), LIMITS)
+
+
+@pytest.mark.parametrize("start", [(-5.0, -5.0, -12.0), (-5.0, -5.0, 0.0)])
+def test_a_move_exactly_on_a_ruckig_profile_boundary_is_planned(start) -> None:
+    # 5*sqrt(2) mm at a = 1000*sqrt(2), j = 20000*sqrt(2) along the diagonal: the distance at
+    # which the acceleration limit is just reached, where ruckig alone raises.
+    limits = MotionLimits(
+        AxisLimits(300.0, 1000.0, 20000.0), AxisLimits(300.0, 1000.0, 20000.0), LIMITS.z, 100.0
+    )
+    move = plan_point_to_point(start, (0.0, 0.0, 0.0), limits)
+    assert move.sample(move.duration_s).xyz == pytest.approx((0.0, 0.0, 0.0), abs=1e-9)
+    assert_within_limits(move.setpoints(PERIOD_S)[:, 1:], limits)
