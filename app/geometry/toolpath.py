@@ -40,7 +40,8 @@ across the stave and moves the tangent points along X by rc*sin(theta).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
 from enum import Enum
 from itertools import pairwise
 
@@ -105,6 +106,13 @@ class ToolPathParams:
     def effective_radius_mm(self) -> float:
         """r / cos(alpha): the cutter's radius in plan view at the table."""
         return self.tool_radius_mm / math.cos(math.radians(self.tilt_deg))
+
+    @classmethod
+    def from_parameters(cls, params: Mapping[str, float], tilt_deg: float) -> ToolPathParams:
+        """From the system parameters, whose names are this class's field names (the
+        database's catalogue and the machine's configuration use the same names)."""
+        names = [f.name for f in fields(cls) if f.name != "tilt_deg"]
+        return cls(tilt_deg=tilt_deg, **{name: float(params[name]) for name in names})
 
     @property
     def pivot_shift_mm(self) -> float:

@@ -14,10 +14,9 @@ from app.data.recipe import Recipe
 from app.geometry.errors import FieldError, GeometryError
 from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
 from app.geometry.profile import StaveProfile, solve_profile
-from app.geometry.toolpath import ToolPath, build_toolpath
+from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.stave_plan import StavePlan, plan_stave
-from app.machine.process_params import toolpath_params
 
 
 class PlanningError(Exception):
@@ -78,7 +77,7 @@ def plan_board(
             recipe.width_ratio.value,
             stave_limits,
         )
-        toolpath = build_toolpath(profile, toolpath_params(params, tilt_deg))
+        toolpath = build_toolpath(profile, ToolPathParams.from_parameters(params, tilt_deg))
     except GeometryError as exc:
         raise PlanningError("E032", str(exc), exc.errors) from exc
     travel = check_toolpath_travel(toolpath, stave_limits)

@@ -7,7 +7,6 @@ from collections.abc import Mapping
 
 from app.config import MachineConfig
 from app.geometry.limits import StaveLimits
-from app.geometry.toolpath import ToolPathParams
 from app.machine.planner.limits import AxisLimits, MotionLimits
 
 
@@ -26,21 +25,6 @@ def config_parameters(config: MachineConfig) -> dict[str, float]:
         "home_y_mm": config.axes["Y"].home_position,
         "home_z_deg": config.axes["Z"].home_position,
     }
-
-
-def toolpath_params(params: Mapping[str, float], tilt_deg: float) -> ToolPathParams:
-    return ToolPathParams(
-        tool_radius_mm=params["tool_radius_mm"],
-        machine_height_mm=params["machine_height_mm"],
-        tilt_deg=tilt_deg,
-        start_x_mm=params["start_x_mm"],
-        start_y_mm=params["start_y_mm"],
-        lead_mm=params["lead_mm"],
-        home_x_mm=params["home_x_mm"],
-        home_y_mm=params["home_y_mm"],
-        home_z_deg=params["home_z_deg"],
-        tilt_clearance_mm=params["tilt_clearance_mm"],
-    )
 
 
 def stave_limits(config: MachineConfig) -> StaveLimits:
