@@ -38,15 +38,7 @@ PERIOD_MS = 10.0  # fewer periods keep the test short; the cycle is the same at 
 @pytest.fixture(
     params=[
         pytest.param(-3, id="homing-stops-past-the-edge"),
-        pytest.param(
-            0,
-            id="homing-stops-exactly-at-the-edge",
-            marks=pytest.mark.xfail(
-                strict=True,
-                reason="planner: ruckig refuses the approach move from exactly the "
-                "homed position (X=Y=-5, Z=-12); reported to the lead",
-            ),
-        ),
+        pytest.param(0, id="homing-stops-exactly-at-the-edge"),
     ]
 )
 def station(channel: str, request: pytest.FixtureRequest) -> Iterator[Bench]:
