@@ -80,12 +80,18 @@ class Watch:
     _plan: Any = None
 
     def flush_contour_error(self) -> None:
-        """Distances of the actual positions while cutting from the exact tool path,
-        computed in one vectorised call when the cut is over."""
+        """Distances of the actual positions from the exact tool path while the cutter is
+        over the board (machine X from P0x to P0x + L: what shapes the stave; the leads cut
+        air), computed in one vectorised call when the cut is over."""
         if self._cut_xy and self._plan is not None:
             xy = np.asarray(self._cut_xy)
-            errors = self._plan.distances_to_path(xy[:, 0], xy[:, 1])
-            self.max_contour_error_mm = max(self.max_contour_error_mm, float(errors.max()))
+            params = self._plan.toolpath.params
+            x0 = params.start_x_mm
+            x1 = x0 + self._plan.toolpath.profile.length_mm
+            on_board = xy[(xy[:, 0] >= x0) & (xy[:, 0] <= x1)]
+            if len(on_board):
+                errors = self._plan.distances_to_path(on_board[:, 0], on_board[:, 1])
+                self.max_contour_error_mm = max(self.max_contour_error_mm, float(errors.max()))
         self._cut_xy.clear()
 
     def observe(self, runtime: MachineRuntime) -> None:
