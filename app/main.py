@@ -128,9 +128,11 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tuple[int, int]) -> int:
     """Screenshots run the real machine in-process on a simulated clock, so that the states
-    they show (a cycle running, an alarm active) are reached quickly and reproducibly."""
+    they show (a cycle running, an alarm active) are reached quickly and reproducibly, on a
+    copy of the database (the user's recipes, nothing written back)."""
     import tempfile
 
+    from app.data.backup import backup_database
     from app.data.database import Database
     from app.machine.local_link import LocalMachineLink
     from app.screens.screenshots import render_screenshots
@@ -138,9 +140,7 @@ def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tupl
     with tempfile.TemporaryDirectory() as tmp:
         shot_db = Path(tmp) / "screenshots.db"
         if db_path.exists():
-            import shutil
-
-            shutil.copy(db_path, shot_db)
+            backup_database(db_path, shot_db)
         link = LocalMachineLink.create(config.with_backend("sim", "sim"), shot_db)
         try:
             with Database.open(shot_db) as database:
