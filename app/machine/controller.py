@@ -45,7 +45,7 @@ from app.machine.executor import ViolationKind, check_feedback
 from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
-from app.machine.preview import build_preview
+from app.machine.preview import build_preview, recipe_preview
 from app.machine.process_params import motion_limits, stave_limits
 from app.machine.snapshot import AxisView, CycleView, MachineSnapshot, PlanPreview
 from app.machine.states import (
@@ -156,6 +156,7 @@ class MachineController:
             return
         event = Event.STARTED_HOMED if self.axes.all_homed() else Event.STARTED_UNHOMED
         self._transition(event)
+        self._publish_recipe_preview()
 
     def shutdown(self) -> None:
         """Stop everything and release the devices (spindle off, drives disabled)."""
@@ -265,6 +266,22 @@ class MachineController:
             self._refuse(f"recipe {c.recipe_id} does not exist")
             return
         self.recipe = recipe
+        self._publish_recipe_preview()
+
+    def _publish_recipe_preview(self) -> None:
+        """Show the selected recipe's stave before a board is measured."""
+        if self.recipe is None:
+            return
+        preview = recipe_preview(
+            self._plan_id + 1,
+            self.recipe,
+            self.params,
+            stave_limits(self.config),
+            self.last_width_mm,
+        )
+        if preview is not None:
+            self._plan_id += 1
+            self._plans = {self._plan_id: preview}
 
     def _on_EnterManual(self, _c: cmd.EnterManual) -> None:
         self.mode = Mode.MANUAL
@@ -314,6 +331,8 @@ class MachineController:
         self.params = self.store.parameters()
         if self.recipe is not None and self.recipe.id is not None:
             self.recipe = self.store.recipe(self.recipe.id) or self.recipe
+        if self.cycle is None:
+            self._publish_recipe_preview()
 
     def _on_ResetShiftCounter(self, _c: cmd.ResetShiftCounter) -> None:
         self.shift_start = self._wall_clock()
@@ -606,7 +625,11 @@ class MachineController:
             return
         cycle._published = True  # type: ignore[attr-defined]
         self._plan_id += 1
-        self._plans = {self._plan_id: build_preview(self._plan_id, cycle.planned)}
+        self._plans = {
+            self._plan_id: build_preview(
+                self._plan_id, cycle.planned.profile, cycle.planned.toolpath
+            )
+        }
 
     def _finish_cycle(self) -> None:
         cycle = self.cycle

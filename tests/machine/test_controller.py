@@ -215,3 +215,16 @@ def test_unplugged_gauge_is_reconnected_by_reset(ready_rig: Rig) -> None:
     rig.send(cmd.Start())
     rig.until(lambda c: c.state is not MachineState.AUTOMATIC, 200.0)
     assert rig.state is MachineState.READY and rig.controller.pieces_total == 1
+
+
+def test_selected_recipe_is_previewed_before_a_board_is_measured(rig: Rig) -> None:
+    snapshot = rig.controller.snapshot()
+    assert snapshot.plan_id > 0, "the first recipe is shown at power-up"
+    preview = rig.controller.plan_preview(snapshot.plan_id)
+    assert preview is not None and len(preview.outline_xy) > 100
+    xs = [x for x, _ in preview.outline_xy]
+    recipe = rig.controller.recipe
+    assert recipe is not None
+    assert max(xs) - min(xs) == pytest.approx(recipe.length_mm, abs=1e-6)
+    rig.select("Foudre 12000 l")
+    assert rig.controller.snapshot().plan_id == snapshot.plan_id + 1
