@@ -31,6 +31,7 @@ from app.machine.snapshot import AlarmState, AlarmView, MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_table_time
 from app.screens.texts import alarm_state_text, alarm_text, history_state_text
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay
 from app.screens.widgets.readouts import styled_label
 
@@ -43,15 +44,6 @@ PERIODS: tuple[tuple[str, timedelta | None], ...] = (
     ("all", None),
 )
 AXIS_SOURCES: tuple[str, ...] = ("X", "Y", "Z")
-
-
-def _button(name: str, kind: str = "") -> QPushButton:
-    button = QPushButton()
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
 
 
 def _table(name: str, columns: int) -> QTableWidget:
@@ -91,9 +83,9 @@ class AlarmsScreen(Screen):
         active_panel = QFrame()
         active_panel.setObjectName("panel")
         self.active_title = styled_label("", "title")
-        self.ack_all_button = _button("ackAllButton", "primary")
+        self.ack_all_button = touch_button("ackAllButton", "primary")
         self.ack_all_button.clicked.connect(lambda: self.context.send(Acknowledge(0)))
-        self.reset_button = _button("alarmsResetButton", "primary")
+        self.reset_button = touch_button("alarmsResetButton", "primary")
         self.reset_button.clicked.connect(lambda: self.context.send(Reset()))
         header = QHBoxLayout()
         header.addWidget(self.active_title, 1)
@@ -116,16 +108,16 @@ class AlarmsScreen(Screen):
         filters = QHBoxLayout()
         filters.addWidget(self.history_title, 1)
         for key, _length in PERIODS:
-            button = _button(f"period_{key}")
+            button = touch_button(f"period_{key}")
             button.setCheckable(True)
             button.setChecked(key == self.period)
             button.clicked.connect(lambda _=False, k=key: self.set_period(k))
             period_group.addButton(button)
             filters.addWidget(button)
             self.period_buttons[key] = button
-        self.code_button = _button("codeFilter")
+        self.code_button = touch_button("codeFilter")
         self.code_button.clicked.connect(self.choose_code)
-        self.source_button = _button("sourceFilter")
+        self.source_button = touch_button("sourceFilter")
         self.source_button.clicked.connect(self.choose_source)
         filters.addWidget(self.code_button)
         filters.addWidget(self.source_button)
@@ -234,7 +226,7 @@ class AlarmsScreen(Screen):
                 table.setItem(row, column, _item(text))
             needs_ack = alarm.state in (AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED)
             if needs_ack:
-                button = _button(f"ack_{alarm.alarm_id}")
+                button = touch_button(f"ack_{alarm.alarm_id}")
                 button.setText(self.tr("Acknowledge"))
                 button.clicked.connect(
                     lambda _=False, i=alarm.alarm_id: self.context.send(Acknowledge(i))

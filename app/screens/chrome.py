@@ -13,6 +13,7 @@ from PySide6.QtWidgets import QButtonGroup, QFrame, QHBoxLayout, QPushButton, QS
 from app.machine.snapshot import AlarmState, MachineSnapshot
 from app.screens.texts import alarm_text, state_text
 from app.screens.theme import set_style_property
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.lamp import StatusLamp, lamp_color
 from app.screens.widgets.readouts import set_text, styled_label
 
@@ -33,15 +34,9 @@ class TopBar(QFrame):
         self.message_label = styled_label("", "message", "messageLabel")
         self.message_label.setWordWrap(True)
         self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        self.user_button = QPushButton()
-        self.user_button.setObjectName("userButton")
-        self.user_button.setProperty("kind", "bar")
-        self.user_button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.user_button = touch_button("userButton", "bar")
         self.user_button.clicked.connect(self.userClicked)
-        self.language_button = QPushButton()
-        self.language_button.setObjectName("languageButton")
-        self.language_button.setProperty("kind", "bar")
-        self.language_button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.language_button = touch_button("languageButton", "bar")
         self.language_button.clicked.connect(self.languageClicked)
         self.clock_label = styled_label("", "value", "clockLabel")
         layout = QHBoxLayout(self)
@@ -125,19 +120,13 @@ class NavBar(QFrame):
         layout.setContentsMargins(8, 6, 8, 6)
         layout.setSpacing(8)
         for key in keys:
-            button = QPushButton()
-            button.setObjectName(f"nav_{key}")
-            button.setProperty("kind", "nav")
+            button = touch_button(f"nav_{key}", "nav")
             button.setCheckable(True)
-            button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
             button.clicked.connect(lambda _=False, k=key: self.navigate.emit(k))
             self.group.addButton(button)
             self.buttons[key] = button
             layout.addWidget(button, 1)
-        self.shutdown_button = QPushButton()
-        self.shutdown_button.setObjectName("nav_shutdown")
-        self.shutdown_button.setProperty("kind", "danger")
-        self.shutdown_button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.shutdown_button = touch_button("nav_shutdown", "danger")
         self.shutdown_button.clicked.connect(self.shutdownClicked)
         layout.addSpacing(12)
         layout.addWidget(self.shutdown_button, 1)

@@ -38,20 +38,12 @@ from app.machine.states import MachineState
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_duration, format_optional
 from app.screens.texts import step_text
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import AxisReadout, ValueTile, set_text, styled_label
 
 LEFT_WIDTH_PX = 268
-
-
-def _button(name: str, kind: str = "") -> QPushButton:
-    button = QPushButton()
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
 
 
 class MainScreen(Screen):
@@ -65,13 +57,13 @@ class MainScreen(Screen):
         recipe_panel = QFrame()
         recipe_panel.setObjectName("panel")
         self.recipe_caption = styled_label("", "caption")
-        self.prev_button = _button("prevRecipe")
+        self.prev_button = touch_button("prevRecipe")
         self.prev_button.setText("◀")
-        self.next_button = _button("nextRecipe")
+        self.next_button = touch_button("nextRecipe")
         self.next_button.setText("▶")
         # The recipe's number between the arrows is a button that opens the list; the name
         # is shown in full below.
-        self.list_button = _button("recipeList", "recipe")
+        self.list_button = touch_button("recipeList", "recipe")
         self.number_label = styled_label("—", "bigvalue", "recipeNumber")
         self.number_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.number_label.setAttribute(Qt.WidgetAttribute.WA_TransparentForMouseEvents)
@@ -98,17 +90,17 @@ class MainScreen(Screen):
         self.next_button.clicked.connect(lambda: self.step_recipe(+1))
         self.list_button.clicked.connect(self.open_recipe_list)
 
-        self.start_button = _button("startButton", "start")
-        self.stop_button = _button("stopButton", "stop")
+        self.start_button = touch_button("startButton", "start")
+        self.stop_button = touch_button("stopButton", "stop")
         self.start_button.clicked.connect(lambda: self.context.send(Start()))
         self.stop_button.clicked.connect(lambda: self.context.send(Stop()))
         self.hint_label = styled_label("", "message", "startHint")
         self.hint_label.setWordWrap(True)
-        self.home_button = _button("homeButton", "primary")
-        self.reset_button = _button("resetButton", "primary")
+        self.home_button = touch_button("homeButton", "primary")
+        self.reset_button = touch_button("resetButton", "primary")
         self.home_button.clicked.connect(lambda: self.context.send(Home()))
         self.reset_button.clicked.connect(lambda: self.context.send(Reset()))
-        self.load_button = _button("loadBoardButton")
+        self.load_button = touch_button("loadBoardButton")
         self.load_button.clicked.connect(lambda: self.context.send(LoadBoard()))
         row = QVBoxLayout()  # one above the other: full width for the longer languages
         row.setSpacing(8)
@@ -141,7 +133,7 @@ class MainScreen(Screen):
         self.total_tile = ValueTile(name="piecesTotal", role="bigvalue")
         self.width_tile = ValueTile(name="lastWidth")
         self.cycle_time_tile = ValueTile(name="lastCycleTime")
-        self.reset_shift_button = _button("resetShiftButton")
+        self.reset_shift_button = touch_button("resetShiftButton")
         self.reset_shift_button.clicked.connect(self.confirm_reset_shift)
         counters = QGridLayout()
         counters.setSpacing(8)

@@ -38,6 +38,7 @@ from app.machine.snapshot import MachineSnapshot
 from app.machine.states import MachineState
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.hold_button import HoldButton
 from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.readouts import AxisReadout, set_text, styled_label
@@ -61,15 +62,6 @@ JOG_PARAMETERS: dict[str, tuple[str, str]] = {
 }
 
 
-def _button(name: str, kind: str = "") -> QPushButton:
-    button = QPushButton()
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
-
-
 class ManualScreen(Screen):
     key = "manual"
 
@@ -84,7 +76,7 @@ class ManualScreen(Screen):
         jog_panel.setObjectName("panel")
         self.mode_label = styled_label("", "value", "manualModeLabel")
         self.mode_label.setWordWrap(True)
-        self.enter_button = _button("enterManualButton", "primary")
+        self.enter_button = touch_button("enterManualButton", "primary")
         self.enter_button.clicked.connect(lambda: self.context.send(EnterManual()))
         cross = QGridLayout()
         cross.setSpacing(8)
@@ -107,8 +99,8 @@ class ManualScreen(Screen):
         cross.addWidget(self.z_caption, 1, 4)
         cross.setColumnMinimumWidth(3, 24)
 
-        self.continuous_button = _button("continuousMode")
-        self.step_button = _button("stepMode")
+        self.continuous_button = touch_button("continuousMode")
+        self.step_button = touch_button("stepMode")
         mode_group = QButtonGroup(self)
         for button in (self.continuous_button, self.step_button):
             button.setCheckable(True)
@@ -125,7 +117,7 @@ class ManualScreen(Screen):
         step_group = QButtonGroup(self)
         steps = QHBoxLayout()
         for size in STEP_SIZES:
-            button = _button(f"step_{format_number(size)}")
+            button = touch_button(f"step_{format_number(size)}")
             button.setText(format_number(size))
             button.setCheckable(True)
             button.setChecked(size == self.step_size)
@@ -166,7 +158,7 @@ class ManualScreen(Screen):
             label = styled_label("X-Y" if group == "XY" else "Z", "value")
             speeds.addWidget(label, row, 0)
             for column in (0, 1):
-                field = _button(f"jog{group}{'Speed' if column == 0 else 'Accel'}", "field")
+                field = touch_button(f"jog{group}{'Speed' if column == 0 else 'Accel'}", "field")
                 field.clicked.connect(lambda _=False, g=group, c=column: self.edit_speed(g, c))
                 speeds.addWidget(field, row, column + 1)
                 self.speed_fields[(group, column)] = field
@@ -177,13 +169,13 @@ class ManualScreen(Screen):
         self.home_caption = styled_label("", "caption")
         self.home_buttons: dict[str, QPushButton] = {}
         for column, axis in enumerate(("X", "Y", "Z", "")):
-            button = _button(f"home{axis or 'All'}", "primary")
+            button = touch_button(f"home{axis or 'All'}", "primary")
             button.clicked.connect(lambda _=False, a=axis: self.context.send(Home(a)))
             actions.addWidget(button, 0, column)
             self.home_buttons[axis] = button
-        self.clamps_button = _button("clampsButton")
+        self.clamps_button = touch_button("clampsButton")
         self.clamps_button.clicked.connect(self.toggle_clamps)
-        self.spindle_button = _button("spindleButton")
+        self.spindle_button = touch_button("spindleButton")
         self.spindle_button.clicked.connect(self.toggle_spindle)
         actions.addWidget(self.clamps_button, 1, 0, 1, 2)
         actions.addWidget(self.spindle_button, 1, 2, 1, 2)

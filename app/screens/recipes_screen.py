@@ -45,6 +45,7 @@ from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number, format_optional
 from app.screens.recipe_preview import RecipePreview, preview_recipe
 from app.screens.theme import set_style_property
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
@@ -73,15 +74,6 @@ FIELDS = (
     "barrel_perimeter_mm",
     "note",
 )
-
-
-def _button(name: str, kind: str = "") -> QPushButton:
-    button = QPushButton()
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
 
 
 def new_recipe_template(name: str) -> Recipe:
@@ -133,11 +125,11 @@ class RecipesScreen(Screen):
         QScroller.grabGesture(
             self.recipe_list.viewport(), QScroller.ScrollerGestureType.TouchGesture
         )
-        self.new_button = _button("newRecipe")
-        self.copy_button = _button("copyRecipe")
-        self.delete_button = _button("deleteRecipe", "danger")
-        self.import_button = _button("importRecipes")
-        self.export_button = _button("exportRecipes")
+        self.new_button = touch_button("newRecipe")
+        self.copy_button = touch_button("copyRecipe")
+        self.delete_button = touch_button("deleteRecipe", "danger")
+        self.import_button = touch_button("importRecipes")
+        self.export_button = touch_button("exportRecipes")
         self.new_button.clicked.connect(self.new_recipe)
         self.copy_button.clicked.connect(self.copy_recipe)
         self.delete_button.clicked.connect(self.delete_recipe)
@@ -184,8 +176,8 @@ class RecipesScreen(Screen):
                 text_label.setFixedWidth(LABEL_WIDTH_PX)  # the values line up
             row.setColumnStretch(1, 1)
             if name == "tilt_mode":
-                self.fixed_button = _button("tiltFixed", "tab")
-                self.barrel_button = _button("tiltBarrel", "tab")
+                self.fixed_button = touch_button("tiltFixed", "tab")
+                self.barrel_button = touch_button("tiltBarrel", "tab")
                 group = QButtonGroup(self)
                 mode_row = QHBoxLayout()
                 for button, mode in (
@@ -198,7 +190,7 @@ class RecipesScreen(Screen):
                     mode_row.addWidget(button)
                 row.addLayout(mode_row, 0, 1, 2, 1)
             else:
-                button = _button(f"field_{name}", "field")
+                button = touch_button(f"field_{name}", "field")
                 if name in ("name", "note"):
                     button.setProperty("align", "left")  # show where a long text begins
                 button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
@@ -215,9 +207,9 @@ class RecipesScreen(Screen):
             self.field_labels[name] = label
             self.range_labels[name] = caption
             self.error_labels[name] = error
-        self.save_button = _button("saveRecipe", "primary")
-        self.discard_button = _button("discardRecipe")
-        self.use_button = _button("useRecipe")
+        self.save_button = touch_button("saveRecipe", "primary")
+        self.discard_button = touch_button("discardRecipe")
+        self.use_button = touch_button("useRecipe")
         self.save_button.clicked.connect(self.save)
         self.discard_button.clicked.connect(self.discard)
         self.use_button.clicked.connect(self.use_on_machine)
@@ -248,7 +240,7 @@ class RecipesScreen(Screen):
         preview_panel = QFrame()
         preview_panel.setObjectName("panel")
         self.preview_title = styled_label("", "title")
-        self.width_button = _button("previewWidth", "field")
+        self.width_button = touch_button("previewWidth", "field")
         self.width_button.clicked.connect(self.edit_preview_width)
         self.width_caption = styled_label("", "caption")
         self.plan_view = PlanView(show_cutter=False)

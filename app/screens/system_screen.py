@@ -43,21 +43,13 @@ from app.machine.snapshot import MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_clock, format_number
 from app.screens.texts import parameter_text, role_text
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.readouts import set_text, styled_label
 
 GROUP_ORDER = ("home", "tool", "start", "motion", "path", "limits", "jog", "production")
 UNIT_SYMBOLS = {"deg": "°", "deg/s": "°/s", "deg/s²": "°/s²"}
 HISTORY_LIMIT = 200
-
-
-def _button(name: str, kind: str = "") -> QPushButton:
-    button = QPushButton()
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
 
 
 def unit_text(unit: str) -> str:
@@ -85,7 +77,7 @@ class SystemScreen(Screen):
         self.locked_label = styled_label("", "title", "lockedLabel")
         self.locked_label.setWordWrap(True)
         self.locked_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        self.unlock_button = _button("unlockButton", "primary")
+        self.unlock_button = touch_button("unlockButton", "primary")
         self.unlock_button.clicked.connect(self.unlock)
         locked_layout = QVBoxLayout(locked)
         locked_layout.addStretch(1)
@@ -102,13 +94,13 @@ class SystemScreen(Screen):
         keys = [*groups(), "log", "simulation"]
         columns = (len(keys) + 2) // 2
         for index, key in enumerate(keys):
-            button = _button(f"group_{key}", "tab")
+            button = touch_button(f"group_{key}", "tab")
             button.setCheckable(True)
             button.clicked.connect(lambda _=False, k=key: self.show_group(k))
             button_group.addButton(button)
             group_grid.addWidget(button, index // columns, index % columns)
             self.group_buttons[key] = button
-        self.lock_button = _button("lockButton", "tab")
+        self.lock_button = touch_button("lockButton", "tab")
         self.lock_button.clicked.connect(self.context.session.logout)
         group_grid.addWidget(self.lock_button, 1, columns - 1)
 
@@ -158,14 +150,14 @@ class SystemScreen(Screen):
         sim_grid = QGridLayout()
         sim_grid.setSpacing(6)
         for index, kind in enumerate(FAULT_KINDS):
-            button = _button(f"inject_{kind}")
+            button = touch_button(f"inject_{kind}")
             button.setText(kind.replace("_", " "))
             button.clicked.connect(lambda _=False, k=kind: self.inject(k))
             sim_grid.addWidget(button, index // 3, index % 3)
             self.fault_buttons[kind] = button
-        self.clear_faults_button = _button("clearFaults", "primary")
+        self.clear_faults_button = touch_button("clearFaults", "primary")
         self.clear_faults_button.clicked.connect(lambda: self.context.send(ClearFaults()))
-        self.load_board_button = _button("simLoadBoard")
+        self.load_board_button = touch_button("simLoadBoard")
         self.load_board_button.clicked.connect(self.load_board)
         sim_actions = QHBoxLayout()
         sim_actions.addWidget(self.clear_faults_button)
@@ -312,7 +304,7 @@ class SystemScreen(Screen):
                 )
             caption = styled_label(caption_text, "caption")
             caption.setWordWrap(True)
-            button = _button(f"param_{spec.name}", "field")
+            button = touch_button(f"param_{spec.name}", "field")
             button.setMinimumWidth(190)
             button.setText(f"{format_number(self.values[spec.name], 6)}{unit}")
             button.setEnabled(allowed)

@@ -19,17 +19,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.overlay import Overlay
-
-
-def _button(text: str, kind: str = "", name: str = "") -> QPushButton:
-    button = QPushButton(text)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    if name:
-        button.setObjectName(name)
-    return button
 
 
 class ConfirmOverlay(Overlay):
@@ -52,8 +43,10 @@ class ConfirmOverlay(Overlay):
         self.message_label.setWordWrap(True)
         self.message_label.setMinimumWidth(520)
         self.message_label.setObjectName("messageLabel")
-        self.confirm_button = _button(confirm_text, "danger" if danger else "primary", "confirm")
-        self.cancel_button = _button(self.tr("Cancel"), name="cancelButton")
+        self.confirm_button = touch_button(
+            "confirm", "danger" if danger else "primary", confirm_text
+        )
+        self.cancel_button = touch_button("cancelButton", text=self.tr("Cancel"))
         self.confirm_button.clicked.connect(self.accept)
         self.cancel_button.clicked.connect(self.reject)
         row = QHBoxLayout()
@@ -78,7 +71,7 @@ class MessageOverlay(Overlay):
         self.message_label.setWordWrap(True)
         self.message_label.setMinimumWidth(520)
         self.message_label.setObjectName("messageLabel")
-        self.ok_button = _button(self.tr("OK"), "primary", "okButton")
+        self.ok_button = touch_button("okButton", "primary", self.tr("OK"))
         self.ok_button.clicked.connect(self.accept)
         self.panel_layout.addWidget(title_label)
         self.panel_layout.addWidget(self.message_label)
@@ -110,7 +103,7 @@ class ChoiceOverlay(Overlay):
         grid.setSpacing(8)
         self.buttons: list[QPushButton] = []
         for index, (text, value) in enumerate(choices):
-            button = _button(text, name=f"choice_{index}")
+            button = touch_button(f"choice_{index}", text=text)
             button.setCheckable(True)
             button.setChecked(value == current and current is not None)
             button.clicked.connect(lambda _=False, v=value: self._pick(v))
@@ -123,7 +116,7 @@ class ChoiceOverlay(Overlay):
         scroll.setMinimumWidth(560)
         scroll.setMinimumHeight(min(440, 66 * max(1, (len(choices) + columns - 1) // columns)))
         QScroller.grabGesture(scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture)
-        self.cancel_button = _button(self.tr("Cancel"), name="cancelButton")
+        self.cancel_button = touch_button("cancelButton", text=self.tr("Cancel"))
         self.cancel_button.clicked.connect(self.reject)
         self.panel_layout.addWidget(title_label)
         self.panel_layout.addWidget(scroll)

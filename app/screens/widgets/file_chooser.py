@@ -17,11 +17,11 @@ from PySide6.QtWidgets import (
     QLabel,
     QListWidget,
     QListWidgetItem,
-    QPushButton,
     QScroller,
     QWidget,
 )
 
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.overlay import Overlay
 
@@ -48,15 +48,6 @@ def default_exchange_dir() -> Path:
         return Path(override).expanduser()
     sticks = removable_roots()
     return sticks[0] if sticks else Path.home()
-
-
-def _button(text: str, name: str, kind: str = "") -> QPushButton:
-    button = QPushButton(text)
-    button.setObjectName(name)
-    if kind:
-        button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-    return button
 
 
 class FileChooser(Overlay):
@@ -87,15 +78,15 @@ class FileChooser(Overlay):
         self.path_label.setProperty("role", "caption")
         self.path_label.setObjectName("pathLabel")
         self.path_label.setWordWrap(True)
-        self.up_button = _button(self.tr("▲ Up"), "upButton")
+        self.up_button = touch_button("upButton", text=self.tr("▲ Up"))
         self.up_button.clicked.connect(self.go_up)
         places = QHBoxLayout()
         places.addWidget(self.up_button)
-        home = _button(self.tr("Home"), "homeDirButton")
+        home = touch_button("homeDirButton", text=self.tr("Home"))
         home.clicked.connect(lambda: self.go_to(Path.home()))
         places.addWidget(home)
         for index, root in enumerate(removable_roots()[:3]):
-            stick = _button(root.name, f"stick_{index}")
+            stick = touch_button(f"stick_{index}", text=root.name)
             stick.clicked.connect(lambda _=False, r=root: self.go_to(r))
             places.addWidget(stick)
         places.addStretch(1)
@@ -105,18 +96,18 @@ class FileChooser(Overlay):
         self.entries.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.entries.itemClicked.connect(self._clicked)
         QScroller.grabGesture(self.entries.viewport(), QScroller.ScrollerGestureType.TouchGesture)
-        self.name_button = _button("", "fileNameButton", "field")
+        self.name_button = touch_button("fileNameButton", "field")
         self.name_button.clicked.connect(self.edit_name)
         self.name_button.setVisible(save_name is not None)
         self.error_label = QLabel()
         self.error_label.setProperty("role", "error")
         self.error_label.setObjectName("errorLabel")
-        self.cancel_button = _button(self.tr("Cancel"), "cancelButton")
+        self.cancel_button = touch_button("cancelButton", text=self.tr("Cancel"))
         self.cancel_button.clicked.connect(self.reject)
-        self.ok_button = _button(
-            self.tr("Save here") if save_name is not None else self.tr("Open"),
+        self.ok_button = touch_button(
             "okButton",
             "primary",
+            self.tr("Save here") if save_name is not None else self.tr("Open"),
         )
         self.ok_button.clicked.connect(self.confirm)
         buttons = QHBoxLayout()

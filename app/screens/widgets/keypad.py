@@ -19,6 +19,7 @@ from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QLabel, QPushButton, QWi
 
 from app.screens.formatting import format_number
 from app.screens.theme import set_style_property
+from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.overlay import Overlay
 
 NumberCheck = Callable[[float], str]
@@ -29,12 +30,8 @@ MAX_DIGITS = 12
 
 def key_button(text: str, kind: str = "key", name: str = "") -> QPushButton:
     """A keypad key: never takes keyboard focus (the overlay keeps it for a USB keyboard)."""
-    button = QPushButton(text)
-    button.setProperty("kind", kind)
-    button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+    button = touch_button(name, kind, text)
     button.setAutoDefault(False)
-    if name:
-        button.setObjectName(name)
     return button
 
 
