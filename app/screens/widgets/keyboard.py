@@ -12,7 +12,7 @@ from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QLabel, QPushButton, QWidget
 
-from app.screens.widgets.keypad import key_button
+from app.screens.widgets.keypad import answer_keys, error_label, key_button
 from app.screens.widgets.overlay import Overlay
 
 TextCheck = Callable[[str], str]
@@ -55,10 +55,7 @@ class TextKeyboard(Overlay):
         self.display.setProperty("role", "display")
         self.display.setObjectName("display")
         self.display.setMinimumWidth(560)
-        self.error_label = QLabel()
-        self.error_label.setProperty("role", "error")
-        self.error_label.setObjectName("errorLabel")
-        self.error_label.setWordWrap(True)
+        self.error_label = error_label()
         self.letter_keys: dict[str, QPushButton] = {}
 
         grid = QGridLayout()
@@ -85,11 +82,7 @@ class TextKeyboard(Overlay):
         self.backspace_button.clicked.connect(self.backspace)
         self.clear_button = key_button("C", "smallkey", name="key_clear")
         self.clear_button.clicked.connect(self.clear)
-        self.cancel_button = key_button("", "smallkey", name="cancelButton")
-        self.cancel_button.clicked.connect(self.reject)
-        self.ok_button = key_button("", "smallkey", name="okButton")
-        self.ok_button.setProperty("kind", "primary")
-        self.ok_button.clicked.connect(self.confirm)
+        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
         bottom.addWidget(self.shift_button)
         bottom.addWidget(self.space_button, 3)
         bottom.addWidget(self.backspace_button)

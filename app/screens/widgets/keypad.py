@@ -26,6 +26,7 @@ NumberCheck = Callable[[float], str]
 FractionCheck = Callable[[int, int], str]
 
 MAX_DIGITS = 12
+DIGIT_ROWS: tuple[tuple[str, ...], ...] = (("7", "8", "9"), ("4", "5", "6"), ("1", "2", "3"))
 
 
 def key_button(text: str, kind: str = "key", name: str = "") -> QPushButton:
@@ -39,6 +40,43 @@ def _label(text: str, role: str) -> QLabel:
     label = QLabel(text)
     label.setProperty("role", role)
     return label
+
+
+def error_label() -> QLabel:
+    """The red line under an entry that says why OK was refused (empty while all is well)."""
+    label = _label("", "error")
+    label.setObjectName("errorLabel")
+    label.setWordWrap(True)
+    return label
+
+
+def typing_key(text: str, key: str, press: Callable[[str], None], name: str = "") -> QPushButton:
+    """A key that calls ``press(key)`` when tapped (digits, "back", "clear")."""
+    button = key_button(text, name=name or f"key_{key}")
+    button.clicked.connect(lambda _=False: press(key))
+    return button
+
+
+def digit_keys(
+    grid: QGridLayout, rows: tuple[tuple[str, ...], ...], press: Callable[[str], None]
+) -> dict[str, QPushButton]:
+    """The digit block, ``rows`` from the top, placed in ``grid`` from column 0."""
+    keys: dict[str, QPushButton] = {}
+    for row, row_keys in enumerate(rows):
+        for column, key in enumerate(row_keys):
+            keys[key] = typing_key(key, key, press)
+            grid.addWidget(keys[key], row, column)
+    return keys
+
+
+def answer_keys(overlay: Overlay, confirm: Callable[[], None]) -> tuple[QPushButton, QPushButton]:
+    """Cancel (rejects the overlay) and OK (``confirm``), without texts: the overlay's own
+    ``retranslate`` sets them, so they are translated in that overlay's context."""
+    cancel = key_button("", "smallkey", name="cancelButton")
+    cancel.clicked.connect(overlay.reject)
+    ok = key_button("", "primary", name="okButton")
+    ok.clicked.connect(confirm)
+    return cancel, ok
 
 
 class ClickableLabel(QLabel):
@@ -106,29 +144,14 @@ class NumberKeypad(Overlay):
         self.display.setObjectName("display")
         self.display.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
         self.display.setMinimumWidth(360)
-        self.error_label = _label("", "error")
-        self.error_label.setObjectName("errorLabel")
-        self.error_label.setWordWrap(True)
+        self.error_label = error_label()
 
-        self.keys: dict[str, QPushButton] = {}
         grid = QGridLayout()
         grid.setSpacing(8)
-        layout_rows = (("7", "8", "9"), ("4", "5", "6"), ("1", "2", "3"), ("±", "0", "."))
-        for row, keys in enumerate(layout_rows):
-            for column, key in enumerate(keys):
-                button = key_button(key, name=f"key_{key}")
-                button.clicked.connect(lambda _=False, k=key: self.press(k))
-                grid.addWidget(button, row, column)
-                self.keys[key] = button
-        self.backspace_button = key_button("⌫", name="key_backspace")
-        self.backspace_button.clicked.connect(lambda: self.press("back"))
-        self.clear_button = key_button("C", name="key_clear")
-        self.clear_button.clicked.connect(lambda: self.press("clear"))
-        self.cancel_button = key_button("", "smallkey", name="cancelButton")
-        self.cancel_button.clicked.connect(self.reject)
-        self.ok_button = key_button("", "smallkey", name="okButton")
-        self.ok_button.setProperty("kind", "primary")
-        self.ok_button.clicked.connect(self.confirm)
+        self.keys = digit_keys(grid, (*DIGIT_ROWS, ("±", "0", ".")), self.press)
+        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
+        self.clear_button = typing_key("C", "clear", self.press, "key_clear")
+        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
         grid.addWidget(self.backspace_button, 0, 3)
         grid.addWidget(self.clear_button, 1, 3)
         grid.addWidget(self.cancel_button, 2, 3)
@@ -293,36 +316,20 @@ class FractionKeypad(Overlay):
         row.addWidget(slash)
         row.addWidget(self.denominator_display)
         row.addWidget(self.decimal_label, 1)
-        self.error_label = _label("", "error")
-        self.error_label.setObjectName("errorLabel")
-        self.error_label.setWordWrap(True)
+        self.error_label = error_label()
 
         grid = QGridLayout()
         grid.setSpacing(8)
-        self.keys: dict[str, QPushButton] = {}
-        for row_index, keys in enumerate((("7", "8", "9"), ("4", "5", "6"), ("1", "2", "3"))):
-            for column, key in enumerate(keys):
-                button = key_button(key, name=f"key_{key}")
-                button.clicked.connect(lambda _=False, k=key: self.press(k))
-                grid.addWidget(button, row_index, column)
-                self.keys[key] = button
-        zero = key_button("0", name="key_0")
-        zero.clicked.connect(lambda: self.press("0"))
-        self.keys["0"] = zero
+        self.keys = digit_keys(grid, DIGIT_ROWS, self.press)
+        zero = self.keys["0"] = typing_key("0", "0", self.press)
         self.slash_button = key_button("/", name="key_slash")
         self.slash_button.clicked.connect(lambda: self.select(1 - self.active))
         grid.addWidget(self.slash_button, 3, 0)
         grid.addWidget(zero, 3, 1, 1, 2)
-        self.backspace_button = key_button("⌫", name="key_backspace")
-        self.backspace_button.clicked.connect(lambda: self.press("back"))
+        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
         grid.addWidget(self.backspace_button, 0, 3)
-        self.clear_button = key_button("C", name="key_clear")
-        self.clear_button.clicked.connect(lambda: self.press("clear"))
-        self.cancel_button = key_button("", "smallkey", name="cancelButton")
-        self.cancel_button.clicked.connect(self.reject)
-        self.ok_button = key_button("", "smallkey", name="okButton")
-        self.ok_button.setProperty("kind", "primary")
-        self.ok_button.clicked.connect(self.confirm)
+        self.clear_button = typing_key("C", "clear", self.press, "key_clear")
+        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
         grid.addWidget(self.clear_button, 1, 3)
         grid.addWidget(self.cancel_button, 2, 3)
         grid.addWidget(self.ok_button, 3, 3)
@@ -433,34 +440,18 @@ class PinPad(Overlay):
         self.display.setObjectName("display")
         self.display.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.display.setMinimumWidth(320)
-        self.error_label = _label("", "error")
-        self.error_label.setObjectName("errorLabel")
-        self.error_label.setWordWrap(True)
+        self.error_label = error_label()
         grid = QGridLayout()
         grid.setSpacing(8)
-        self.keys: dict[str, QPushButton] = {}
-        for row_index, keys in enumerate((("7", "8", "9"), ("4", "5", "6"), ("1", "2", "3"))):
-            for column, key in enumerate(keys):
-                button = key_button(key, name=f"key_{key}")
-                button.clicked.connect(lambda _=False, k=key: self.press(k))
-                grid.addWidget(button, row_index, column)
-                self.keys[key] = button
-        zero = key_button("0", name="key_0")
-        zero.clicked.connect(lambda: self.press("0"))
-        self.keys["0"] = zero
-        self.backspace_button = key_button("⌫", name="key_backspace")
-        self.backspace_button.clicked.connect(lambda: self.press("back"))
-        self.cancel_button = key_button("", "smallkey", name="cancelButton")
-        self.cancel_button.clicked.connect(self.reject)
-        self.ok_button = key_button("", "smallkey", name="okButton")
-        self.ok_button.setProperty("kind", "primary")
-        self.ok_button.clicked.connect(self.confirm)
+        self.keys = digit_keys(grid, DIGIT_ROWS, self.press)
+        zero = self.keys["0"] = typing_key("0", "0", self.press)
+        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
+        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
         grid.addWidget(self.backspace_button, 3, 0)
         grid.addWidget(zero, 3, 1)
         grid.addWidget(self.cancel_button, 3, 2)
         grid.addWidget(self.ok_button, 3, 3)
-        clear = key_button("C", name="key_clear")
-        clear.clicked.connect(lambda: self.press("clear"))
+        clear = typing_key("C", "clear", self.press, "key_clear")
         grid.addWidget(clear, 0, 3)
         self.panel_layout.addWidget(self.title_label)
         self.panel_layout.addWidget(self.display)
