@@ -23,6 +23,21 @@ from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.overlay import Overlay
 
 
+def _title_label(title: str) -> QLabel:
+    label = QLabel(title)
+    label.setProperty("role", "title")
+    return label
+
+
+def _message_label(message: str) -> QLabel:
+    """The wrapped text of a confirmation or message, wide enough to read at a glance."""
+    label = QLabel(message)
+    label.setWordWrap(True)
+    label.setMinimumWidth(520)
+    label.setObjectName("messageLabel")
+    return label
+
+
 class ConfirmOverlay(Overlay):
     """A question with two big answers; ``finished(True)`` when confirmed."""
 
@@ -37,12 +52,8 @@ class ConfirmOverlay(Overlay):
     ) -> None:
         super().__init__(parent)
         self.setObjectName("confirmOverlay")
-        title_label = QLabel(title)
-        title_label.setProperty("role", "title")
-        self.message_label = QLabel(message)
-        self.message_label.setWordWrap(True)
-        self.message_label.setMinimumWidth(520)
-        self.message_label.setObjectName("messageLabel")
+        title_label = _title_label(title)
+        self.message_label = _message_label(message)
         self.confirm_button = touch_button(
             "confirm", "danger" if danger else "primary", confirm_text
         )
@@ -65,12 +76,8 @@ class MessageOverlay(Overlay):
     def __init__(self, title: str, message: str, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("messageOverlay")
-        title_label = QLabel(title)
-        title_label.setProperty("role", "title")
-        self.message_label = QLabel(message)
-        self.message_label.setWordWrap(True)
-        self.message_label.setMinimumWidth(520)
-        self.message_label.setObjectName("messageLabel")
+        title_label = _title_label(title)
+        self.message_label = _message_label(message)
         self.ok_button = touch_button("okButton", "primary", self.tr("OK"))
         self.ok_button.clicked.connect(self.accept)
         self.panel_layout.addWidget(title_label)
@@ -96,8 +103,7 @@ class ChoiceOverlay(Overlay):
     ) -> None:
         super().__init__(parent)
         self.setObjectName("choiceOverlay")
-        title_label = QLabel(title)
-        title_label.setProperty("role", "title")
+        title_label = _title_label(title)
         content = QWidget()
         grid = QGridLayout(content)
         grid.setSpacing(8)
