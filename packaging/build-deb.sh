@@ -132,7 +132,7 @@ rm -f "$venv"/lib/python*/site-packages/stave_jointer-*.dist-info/direct_url.jso
 find "$venv" -name __pycache__ -type d -prune -exec rm -rf {} +
 
 step "relocating the virtualenv to $prefix/venv"
-grep -rlF --null "$venv" "$venv" | xargs -0 -r "$vpy" -I -c '
+{ grep -rlF --null "$venv" "$venv" || true; } | xargs -0 -r "$vpy" -I -c '
 import sys
 old, new = sys.argv[1].encode(), sys.argv[2].encode()
 for name in sys.argv[3:]:
