@@ -121,9 +121,27 @@ def main(argv: Sequence[str] | None = None) -> int:
     link = ProcessMachineLink.start(config, db_path)
     try:
         with Database.open(db_path) as database:
+            _quit_on_sigterm()
             return run_gui(link, database, language=language, kiosk=args.kiosk)
     finally:
         link.close()
+
+
+def _quit_on_sigterm() -> None:
+    """systemd stops the kiosk with SIGTERM: end the event loop, so that the link is closed
+    and the machine stops safely, instead of dying in the middle of it. A timer lets the
+    Python interpreter run the handler while Qt's event loop waits."""
+    import signal
+
+    from PySide6.QtCore import QTimer
+
+    from app.screens.application import ensure_application
+
+    app = ensure_application()
+    signal.signal(signal.SIGTERM, lambda _signum, _frame: app.quit())
+    timer = QTimer(app)
+    timer.timeout.connect(lambda: None)
+    timer.start(200)
 
 
 def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tuple[int, int]) -> int:

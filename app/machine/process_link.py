@@ -19,6 +19,7 @@ import multiprocessing
 import multiprocessing.queues
 import os
 import queue
+import signal
 import time
 from pathlib import Path
 from typing import Any
@@ -67,6 +68,15 @@ def machine_process_main(
     runtime.start()
     controller = runtime.controller
     running = True
+
+    def stop_on_signal(_signum: int, _frame: object) -> None:
+        # systemd stops the whole service with SIGTERM: end the loop, then the normal
+        # shutdown switches the spindle off and disables the drives.
+        nonlocal running
+        running = False
+
+    signal.signal(signal.SIGTERM, stop_on_signal)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl+C goes to the GUI, which closes us
     last_publish = 0.0
     published_plan = 0
 
@@ -125,6 +135,7 @@ class ProcessMachineLink:
         self._latest: MachineSnapshot | None = None
         self._plans: dict[int, PlanPreview] = {}
         self.lateness: dict[str, float] = {}
+        self._closed = False
 
     @classmethod
     def start(
@@ -144,10 +155,12 @@ class ProcessMachineLink:
         return cls(process, commands, snapshots, plans)
 
     def send(self, command: Command) -> None:
-        if self._process.is_alive():
+        if not self._closed and self._process.is_alive():
             self._commands.put_nowait(command)
 
     def latest(self) -> MachineSnapshot | None:
+        if self._closed:
+            return self._latest
         while True:
             try:
                 item = self._snapshots.get_nowait()
@@ -183,6 +196,9 @@ class ProcessMachineLink:
         return self.latest()
 
     def close(self, timeout_s: float = 5.0) -> None:
+        """Ask the machine to stop safely and wait for it; safe to call more than once."""
+        if self._closed:
+            return
         if self._process.is_alive():
             with contextlib.suppress(ValueError, OSError):
                 self._commands.put_nowait(Shutdown())
@@ -192,6 +208,7 @@ class ProcessMachineLink:
                 self._process.terminate()
                 self._process.join(timeout_s)
         self.latest()
+        self._closed = True
         for q in (self._commands, self._snapshots, self._plans_queue):
             q.close()
             q.cancel_join_thread()
