@@ -10,6 +10,7 @@ Module map, one job each:
   consecutive failures, declare the link lost) over every link of the backend.
 - :mod:`.cia402`: the controlword a drive gets each period (enable walk, fault-reset edge,
   homing start edge), pure logic.
+- :mod:`.device`: the lifecycle the drives and the coupler share on the bus.
 - :mod:`.drives` / :mod:`.coupler`: the contracts (:class:`MotionBackend`,
   :class:`DigitalIO`) on top of the bus.
 - :mod:`.rtu_timing`: what period Modbus RTU can hold for a given register map and line.

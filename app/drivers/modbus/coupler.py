@@ -14,7 +14,6 @@ from __future__ import annotations
 from dataclasses import asdict
 
 from app.drivers.contracts import (
-    CommunicationError,
     DeviceEvent,
     DigitalIO,
     DriverError,
@@ -24,50 +23,23 @@ from app.drivers.contracts import (
     OutputImage,
 )
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
+from app.drivers.modbus.device import BusDevice
 from app.drivers.modbus.link import ModbusLink
 from app.drivers.modbus.settings import CouplerSettings
 
 USER = "io"
 
 
-class ModbusIO(DigitalIO):
+class ModbusIO(BusDevice, DigitalIO):
     def __init__(self, settings: CouplerSettings, bus: ModbusBus) -> None:
+        super().__init__(bus, USER, "io")
         self.settings = settings
-        self._bus = bus
         self.address = DeviceAddress("io", settings.endpoint, settings.device_id)
-        self._state = LifecycleState.UNCONFIGURED
-        self._generation = -1
         self._inputs: InputImage | None = None
 
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._state
-
-    def _sync_state(self) -> None:
-        """ACTIVE/INACTIVE on a link lost (or reopened by the other device) since this
-        device's configure is ERROR: only configure may follow."""
-        if self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE) and self._bus.stale(
-            self._generation
-        ):
-            self._state = LifecycleState.ERROR
-
     def configure(self) -> None:
-        self._sync_state()
-        if self._state not in (
-            LifecycleState.UNCONFIGURED,
-            LifecycleState.INACTIVE,
-            LifecycleState.ERROR,
-        ):
-            raise LifecycleError("io", f"configure in state {self._state.value}")
-        try:
-            self._bus.acquire(USER)
-            self._generation = self._bus.generation
-            self._inputs = self._read(tolerate=False)
-        except DriverError:
-            self._state = LifecycleState.ERROR
-            self._bus.release(USER)
-            raise
-        self._state = LifecycleState.INACTIVE
+        self._check_configurable()
+        self._open(lambda: self._read(tolerate=False))  # _read keeps the image
 
     def activate(self) -> None:
         """Start cyclic exchange with every output off."""
@@ -91,28 +63,8 @@ class ModbusIO(DigitalIO):
         self._state = LifecycleState.INACTIVE
         self._write(OutputImage(), tolerate=False)
 
-    def shutdown(self) -> None:
-        if self._state is LifecycleState.FINALIZED:
-            return
-        try:
-            self.deactivate()
-        except DriverError:
-            pass  # shutdown must always finish; the loss has already been reported
-        finally:
-            self._bus.release(USER)
-            self._state = LifecycleState.FINALIZED
-
     def events(self) -> list[DeviceEvent]:
         return self._bus.events()
-
-    def _check(self, *allowed: LifecycleState) -> None:
-        self._sync_state()
-        if self._state not in allowed:
-            if self._state is LifecycleState.ERROR and self._bus.stale(self._generation):
-                raise CommunicationError(
-                    "io", "Modbus link lost; an operator's reset must reconfigure the backend"
-                )
-            raise LifecycleError("io", f"not allowed in state {self._state.value}")
 
     # -- cyclic exchange ------------------------------------------------------------------
     def _read(self, *, tolerate: bool) -> InputImage:
@@ -123,14 +75,10 @@ class ModbusIO(DigitalIO):
             return link.read_discrete_inputs(s.device_id, s.inputs_address, count)
 
         try:
-            bits = self._bus.exchange(self.address, read, tolerate=tolerate)
+            bits = self._exchange(self.address, read, tolerate=tolerate)
         except TransientError:
             assert self._inputs is not None  # configure read the inputs once
             return self._inputs
-        except CommunicationError:
-            if self._bus.lost:
-                self._state = LifecycleState.ERROR
-            raise
         values = {name: bits[bit] != (name in s.inverted) for name, bit in s.input_bits.items()}
         self._inputs = InputImage(**values)
         return self._inputs
@@ -149,13 +97,9 @@ class ModbusIO(DigitalIO):
             link.write_coils(s.device_id, s.outputs_address, bits)
 
         try:
-            self._bus.exchange(self.address, write, tolerate=tolerate)
+            self._exchange(self.address, write, tolerate=tolerate)
         except TransientError:
             return  # written again next period
-        except CommunicationError:
-            if self._bus.lost:
-                self._state = LifecycleState.ERROR
-            raise
 
     def read_inputs(self) -> InputImage:
         self._check(LifecycleState.INACTIVE, LifecycleState.ACTIVE)

@@ -23,7 +23,6 @@ from app.config import AxisConfig
 from app.drivers.contracts import (
     AxisFeedback,
     Cia402State,
-    CommunicationError,
     DeviceEvent,
     DeviceEventKind,
     DriverError,
@@ -34,6 +33,7 @@ from app.drivers.contracts import (
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
 from app.drivers.modbus.cia402 import Cia402Commander
 from app.drivers.modbus.codec import EncodeError, encode, field_value, put_field
+from app.drivers.modbus.device import BusDevice
 from app.drivers.modbus.link import ModbusLink
 from app.drivers.modbus.settings import DriveSettings, WordOrder
 
@@ -101,56 +101,31 @@ class _Axis:
         )
 
 
-class ModbusMotion(MotionBackend):
+class ModbusMotion(BusDevice, MotionBackend):
     def __init__(
         self, drives: Mapping[str, DriveSettings], axes: Mapping[str, AxisConfig], bus: ModbusBus
     ) -> None:
-        self._bus = bus
+        super().__init__(bus, USER, "modbus")
         self._drives = dict(drives)
         self._axes: dict[str, _Axis] = {}
-        self._state = LifecycleState.UNCONFIGURED
-        self._generation = -1
         self._events: list[DeviceEvent] = []
         self._axis_configs = dict(axes)
 
     # -- lifecycle --------------------------------------------------------------------------
     @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._state
-
-    @property
     def axis_names(self) -> tuple[str, ...]:
         return tuple(self._drives)
-
-    def _sync_state(self) -> None:
-        """ACTIVE/INACTIVE on a link lost (or reopened by the other device) since this
-        device's configure is ERROR: only configure may follow."""
-        if self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE) and self._bus.stale(
-            self._generation
-        ):
-            self._state = LifecycleState.ERROR
 
     def configure(self) -> None:
         """Open the links and read every drive once: a drive that does not answer, or
         refuses the mapped block, fails here with its unit id and link named."""
-        self._sync_state()
-        if self._state not in (
-            LifecycleState.UNCONFIGURED,
-            LifecycleState.INACTIVE,
-            LifecycleState.ERROR,
-        ):
-            raise LifecycleError("modbus", f"configure in state {self._state.value}")
+        self._check_configurable()
         self._axes = {name: _Axis(s, self._axis_configs[name]) for name, s in self._drives.items()}
-        try:
-            self._bus.acquire(USER)
-            self._generation = self._bus.generation
-            for axis in self._axes.values():
-                self._read_axis(axis, tolerate=False)
-        except DriverError:
-            self._state = LifecycleState.ERROR
-            self._bus.release(USER)
-            raise
-        self._state = LifecycleState.INACTIVE
+        self._open(self._read_every_axis)
+
+    def _read_every_axis(self) -> None:
+        for axis in self._axes.values():
+            self._read_axis(axis, tolerate=False)
 
     def activate(self) -> None:
         """Start cyclic exchange: targets are set to the measured positions. Nothing is
@@ -182,32 +157,12 @@ class ModbusMotion(MotionBackend):
         self._state = LifecycleState.INACTIVE
         self._write_all({}, tolerate=False)
 
-    def shutdown(self) -> None:
-        if self._state is LifecycleState.FINALIZED:
-            return
-        try:
-            self.deactivate()
-        except DriverError:
-            pass  # shutdown must always finish; the link's loss has already been reported
-        finally:
-            self._bus.release(USER)
-            self._state = LifecycleState.FINALIZED
-
     def events(self) -> list[DeviceEvent]:
         events, self._events = self._events, []
         return events + self._bus.events()
 
     def _fail(self) -> None:
         self._state = LifecycleState.ERROR
-
-    def _check(self, *allowed: LifecycleState) -> None:
-        self._sync_state()
-        if self._state not in allowed:
-            if self._state is LifecycleState.ERROR and self._bus.stale(self._generation):
-                raise CommunicationError(
-                    "modbus", "Modbus link lost; an operator's reset must reconfigure the backend"
-                )
-            raise LifecycleError("modbus", f"not allowed in state {self._state.value}")
 
     def _axis(self, name: str) -> _Axis:
         try:
@@ -226,14 +181,10 @@ class ModbusMotion(MotionBackend):
             return link.read_registers(m.status_table, axis.address.device_id, start, count)
 
         try:
-            block = self._bus.exchange(axis.address, read, tolerate=tolerate)
+            block = self._exchange(axis.address, read, tolerate=tolerate)
         except TransientError:
             assert axis.feedback is not None  # configure read every axis once
             return axis.feedback
-        except CommunicationError:
-            if self._bus.lost:
-                self._fail()
-            raise
         previous = axis.commander.state
         outcome = axis.commander.observe(int(block[m.statusword.address - start]))
         if outcome is not None and outcome.ok:
@@ -308,13 +259,9 @@ class ModbusMotion(MotionBackend):
                 link.write_registers(unit, start, block)
 
             try:
-                self._bus.exchange(axis.address, write, tolerate=tolerate)
+                self._exchange(axis.address, write, tolerate=tolerate)
             except TransientError:
                 continue  # sent again next period
-            except CommunicationError:
-                if self._bus.lost:
-                    self._fail()
-                raise
 
     # -- power-state requests -------------------------------------------------------------------
     def enable(self, axis: str) -> None:
