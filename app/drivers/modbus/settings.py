@@ -394,19 +394,26 @@ def parse_drive_map(raw: Mapping[str, Any], path: str, source: str) -> DriveMap:
     )
 
 
-def _endpoint(
-    section: Section, raw: Mapping[str, Any], path: str, link: LinkSettings, source: str
-) -> Endpoint | None:
+def _refuse_keys(
+    section: Section, raw: Mapping[str, Any], names: tuple[str, ...], allowed: str
+) -> None:
+    """Keys that do not belong in this set-up (the other transport's): the first one present
+    is refused, naming it, rather than silently ignored."""
+    for name in names:
+        if name in raw:
+            raise section.error(name, raw[name], allowed)
+
+
+def _endpoint(section: Section, raw: Mapping[str, Any], link: LinkSettings) -> Endpoint | None:
     """A device's own TCP server (``host``/``port`` keys), or None to use the link's."""
-    present = [name for name in ("host", "port") if name in raw]
-    if not present:
+    if not any(name in raw for name in ("host", "port")):
         return None
     if link.transport is Transport.RTU:
-        raise ConfigError(
-            f"{path}.{present[0]}",
-            raw[present[0]],
+        _refuse_keys(
+            section,
+            raw,
+            ("host", "port"),
             "absent: on Modbus RTU every device is on backend.modbus.serial_port",
-            source,
         )
     assert link.endpoint is not None
     host = section.text("host", link.endpoint.host)
@@ -416,7 +423,7 @@ def _endpoint(
     return Endpoint(host.strip(), port)
 
 
-def _parse_link(s: Section, raw: Mapping[str, Any], path: str, source: str) -> LinkSettings:
+def _parse_link(s: Section, raw: Mapping[str, Any]) -> LinkSettings:
     transport = Transport(s.text("transport", "tcp", tuple(t.value for t in Transport)))
     timeout_s = s.number("timeout_ms", 50.0, 1.0, 5000.0) / 1000.0
     retries = s.integer("retries", 1, 0, 5)
@@ -425,14 +432,12 @@ def _parse_link(s: Section, raw: Mapping[str, Any], path: str, source: str) -> L
     endpoint: Endpoint | None = None
     serial: SerialLine | None = None
     if transport is Transport.TCP:
-        for rtu_only in ("serial_port", "baudrate", "parity", "stopbits", "rtu_frame_gap_ms"):
-            if rtu_only in raw:
-                raise ConfigError(
-                    f"{path}.{rtu_only}",
-                    raw[rtu_only],
-                    'absent for transport = "tcp" (an RTU setting)',
-                    source,
-                )
+        _refuse_keys(
+            s,
+            raw,
+            ("serial_port", "baudrate", "parity", "stopbits", "rtu_frame_gap_ms"),
+            'absent for transport = "tcp" (an RTU setting)',
+        )
         host = s.text("host", "")
         if not host.strip():
             raise s.error(
@@ -443,14 +448,7 @@ def _parse_link(s: Section, raw: Mapping[str, Any], path: str, source: str) -> L
         endpoint = Endpoint(host.strip(), s.integer("port", 502, 1, 65535))
         gap_s = 0.0
     else:
-        for tcp_only in ("host", "port"):
-            if tcp_only in raw:
-                raise ConfigError(
-                    f"{path}.{tcp_only}",
-                    raw[tcp_only],
-                    'absent for transport = "rtu" (a TCP setting)',
-                    source,
-                )
+        _refuse_keys(s, raw, ("host", "port"), 'absent for transport = "rtu" (a TCP setting)')
         port = s.text("serial_port", "")
         if not port.strip():
             raise s.error(
@@ -495,7 +493,7 @@ def _parse_drive(
     path = f"backend.modbus.drives.{axis}"
     s, raw = _sub(drives, axis, path, source, exclude=("map",))
     device_id = s.integer("device_id", DEFAULT_DEVICE_IDS.get(axis, 1), 1, 247)
-    endpoint = _endpoint(s, raw, path, link, source)
+    endpoint = _endpoint(s, raw, link)
     counts = s.number("counts_per_unit", 1000.0)
     if abs(counts) < 1e-9:
         raise s.error("counts_per_unit", counts, "a number other than 0 (negative inverts)")
@@ -531,7 +529,7 @@ def _parse_coupler(root: Section, link: LinkSettings, source: str) -> CouplerSet
     path = "backend.modbus.io"
     s, raw = _sub(root, "io", path, source, exclude=("inverted",))
     device_id = s.integer("device_id", DEFAULT_COUPLER_ID, 1, 247)
-    endpoint = _endpoint(s, raw, path, link, source)
+    endpoint = _endpoint(s, raw, link)
     inputs_address = s.integer("inputs_address", 0, 0, _ADDRESS_MAX)
     outputs_address = s.integer("outputs_address", 0, 0, _ADDRESS_MAX)
     inputs_section = s.table("inputs")
@@ -581,7 +579,7 @@ def parse_modbus_settings(raw: object, config: MachineConfig) -> ModbusSettings:
     if not isinstance(raw, Mapping):
         raise ConfigError(path, raw, "a table", config.source)
     s = Section(raw, path, config.source)
-    link = _parse_link(s, raw, path, config.source)
+    link = _parse_link(s, raw)
     map_raw = {**DEFAULT_DRIVE_MAP, **s.raw_table("drive_map")}
     shared_map = parse_drive_map(map_raw, f"{path}.drive_map", config.source)
     drives_section = s.table("drives")
