@@ -539,9 +539,10 @@ class MachineController:
                 text = EMERGENCY_TEXTS.get(fb.fault_code, "")
                 self._fault(code, name, f"fault code 0x{fb.fault_code:04X} {text}".strip())
             else:
-                for code in ("E010", "E011", "E012", "E013"):
-                    if self.state not in LATCHED_STATES or code != "E013":
-                        self.alarms.clear(code, name)
+                # The drive is out of FAULT: those conditions have returned to normal (the
+                # alarms stay shown until acknowledged). E013 is an event, cleared by Reset.
+                for code in ("E010", "E011", "E012"):
+                    self.alarms.clear(code, name)
         if self.cycle is not None and self.cycle.moving:
             setpoint = {n: self.axes.command[n] for n in self.axes.names}
             for violation in check_feedback(self.axes.feedback, setpoint, self.config.axes):

@@ -83,16 +83,30 @@ class ManualControl:
         axes.request_enable()
         return ""
 
+    @staticmethod
+    def _toward_active_switch(axis: str, direction: int, axes: AxisGroup) -> str:
+        """After a limit trip the axis may only be jogged away from the switch."""
+        fb = axes.feedback.get(axis)
+        if fb is not None and fb.limit_positive and direction > 0:
+            return f"{axis}+ limit switch is active: jog {axis} in the - direction only"
+        if fb is not None and fb.limit_negative and direction < 0:
+            return f"{axis}- limit switch is active: jog {axis} in the + direction only"
+        return ""
+
     def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> str:
         if reason := self._check_axis(axis, axes):
             return reason
         if direction not in (-1, 1):
             return f"jog direction {direction} is not allowed: -1 or 1"
+        if reason := self._toward_active_switch(axis, direction, axes):
+            return reason
         self._last_refresh_s[axis] = now_s
         return self._joggers[axis].press(direction).reason
 
     def step(self, axis: str, distance: float, axes: AxisGroup) -> str:
         if reason := self._check_axis(axis, axes):
+            return reason
+        if reason := self._toward_active_switch(axis, 1 if distance > 0 else -1, axes):
             return reason
         result = self._joggers[axis].step(distance)
         return "" if result.accepted else result.reason

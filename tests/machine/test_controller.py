@@ -228,3 +228,21 @@ def test_selected_recipe_is_previewed_before_a_board_is_measured(rig: Rig) -> No
     assert max(xs) - min(xs) == pytest.approx(recipe.length_mm, abs=1e-6)
     rig.select("Foudre 12000 l")
     assert rig.controller.snapshot().plan_id == snapshot.plan_id + 1
+
+
+def test_after_a_limit_trip_jog_only_away_from_the_switch(rig: Rig) -> None:
+    rig.home()
+    rig.send(cmd.EnterManual())
+    rig.faults.inject("limit_switch", "X+")
+    rig.send(cmd.JogStep("X", 1.0), run_s=0.5)
+    assert rig.state is MachineState.ERROR
+    assert any(a.code == "E012" for a in rig.controller.snapshot().alarms)
+    rig.send(cmd.Reset(), run_s=0.5)
+    rig.send(cmd.EnterManual())
+    x0 = rig.positions()[0]
+    rig.send(cmd.JogStep("X", 5.0), run_s=1.0)
+    assert "X+ limit switch is active" in rig.controller.message
+    assert rig.positions()[0] == pytest.approx(x0, abs=0.01)
+    rig.send(cmd.JogStep("X", -5.0), run_s=2.0)
+    assert rig.state is MachineState.MANUAL
+    assert rig.positions()[0] == pytest.approx(x0 - 5.0, abs=0.05)
