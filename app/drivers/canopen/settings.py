@@ -15,7 +15,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from app.config import AxisConfig, ConfigError, MachineConfig
+from app.config import AxisConfig, ConfigError, MachineConfig, Section
 from app.drivers.canopen.busload import MAX_BUS_LOAD, BusLoad, bus_load
 from app.drivers.canopen.pdo import cyclic_frames
 from app.drivers.contracts import InputImage, OutputImage
@@ -129,21 +129,15 @@ class CanopenSettings:
 _MISSING = object()
 
 
-class _Table:
-    """Reads one table of the raw settings, refusing unknown keys (like app.config)."""
+class _Table(Section):
+    """:class:`app.config.Section` plus what these settings need beyond it: values without a
+    default (``_MISSING``: refused with "(required)"), a note on what a whole number means in
+    its message, positive numbers, choices of any type, and required sub-tables.
+
+    The messages name no file (source ""), as these settings' messages always have."""
 
     def __init__(self, data: object, path: str) -> None:
-        if not isinstance(data, Mapping):
-            raise ConfigError(path, data, "a table")
-        self._data: Mapping[str, Any] = data
-        self.path = path
-        self._used: set[str] = set()
-
-    def key(self, name: str) -> str:
-        return f"{self.path}.{name}"
-
-    def error(self, name: str, value: object, allowed: str) -> ConfigError:
-        return ConfigError(self.key(name), value, allowed)
+        super().__init__(data, path, "")
 
     def value(self, name: str, default: object, allowed: str) -> object:
         self._used.add(name)
@@ -152,14 +146,16 @@ class _Table:
             raise self.error(name, None, f"{allowed} (required)")
         return value
 
-    def integer(self, name: str, default: object, lo: int, hi: int, what: str = "") -> int:
-        allowed = f"a whole number from {lo} to {hi}{what}"
+    def integer(
+        self, name: str, default: object, minimum: int, maximum: int, what: str = ""
+    ) -> int:
+        allowed = f"a whole number from {minimum} to {maximum}{what}"
         value = self.value(name, default, allowed)
-        if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
+        if isinstance(value, bool) or not isinstance(value, int) or not minimum <= value <= maximum:
             raise self.error(name, value, allowed)
         return value
 
-    def number(self, name: str, default: object, what: str = "") -> float:
+    def positive(self, name: str, default: object, what: str = "") -> float:
         allowed = f"a number > 0{what}"
         value = self.value(name, default, allowed)
         if (
@@ -171,12 +167,6 @@ class _Table:
             raise self.error(name, value, allowed)
         return float(value)
 
-    def boolean(self, name: str, default: bool) -> bool:
-        value = self.value(name, default, "true or false")
-        if not isinstance(value, bool):
-            raise self.error(name, value, "true or false")
-        return value
-
     def choice(self, name: str, default: object, choices: tuple[Any, ...]) -> Any:
         allowed = "one of " + ", ".join(repr(c) for c in choices)
         value = self.value(name, default, allowed)
@@ -186,17 +176,12 @@ class _Table:
 
     def table(self, name: str, *, required: bool = False) -> _Table:
         value = self.value(name, _MISSING if required else {}, "a table")
-        return _Table(value, self.key(name))
-
-    def finish(self) -> None:
-        unknown = sorted(set(self._data) - self._used)
-        if unknown:
-            raise self.error(unknown[0], self._data[unknown[0]], f"a known key of [{self.path}]")
+        return _Table(value, self._key(name))
 
 
 def _read_axis(table: _Table, axis: AxisConfig) -> AxisNodeSettings:
     node_id = table.integer("node_id", _MISSING, 1, 127, " (the drive's CANopen node id)")
-    counts = table.number(
+    counts = table.positive(
         "counts_per_unit", _MISSING, f" (encoder increments per {axis.unit} of axis {axis.name})"
     )
     invert = table.boolean("invert", False)
