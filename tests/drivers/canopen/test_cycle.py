@@ -14,12 +14,11 @@ from pathlib import Path
 import pytest
 
 from app.config import parse_config
-from app.data.recipe_files import load_recipe_file
 from app.drivers.contracts import Cia402State
 from app.machine import commands as cmd
 from app.machine.cli_simulate import Watch
 from app.machine.runtime import MachineRuntime
-from app.machine.states import LATCHED_STATES, MachineState
+from app.machine.states import MachineState
 from tests.drivers.canopen.conftest import (
     INPUT_BITS,
     IO_NODE,
@@ -29,8 +28,8 @@ from tests.drivers.canopen.conftest import (
     machine_data,
 )
 from tests.drivers.canopen.sim_drive import SimDrive, SimNetwork, SimStationIo
+from tests.drivers.cycle_helpers import cut_one_board, select_sample_recipe
 
-ROOT = Path(__file__).resolve().parents[3]
 BOARD_MM = 150.0
 PERIOD_MS = 10.0  # fewer periods keep the test short; the cycle is the same at 4 ms
 
@@ -82,11 +81,7 @@ def test_full_automatic_cycle_on_canopen(channel: str, station: Bench, tmp_path:
         runtime.on_tick.append(lambda _rt: spindle_seen.append(io._on("spindle_on")))
         runtime.start()
         c = runtime.controller
-        recipe = c.store.save_recipe(
-            load_recipe_file(ROOT / "resources" / "recipes" / "sample_recipes.json")[0]
-        )
-        assert recipe.id is not None
-        c.post(cmd.SelectRecipe(recipe.id))
+        select_sample_recipe(runtime)
         assert c.state is MachineState.NOT_HOMED, c.state_text()
         c.post(cmd.Home())  # X and Y have incremental encoders: homed through the drives
         assert runtime.run_until(lambda m: m.state is MachineState.READY, 120.0), c.state_text()
@@ -94,22 +89,7 @@ def test_full_automatic_cycle_on_canopen(channel: str, station: Bench, tmp_path:
         syncs_before = station.drives["X"].sync_count
         io.part_present = True  # the operator puts a board in
         runtime.run_for(0.1)
-        c.post(cmd.Start())
-        runtime.run_for(2 * runtime.period_s)
-        assert runtime.run_until(
-            lambda m: (
-                m.state in LATCHED_STATES or (m.state is MachineState.READY and m.cycle is None)
-            ),
-            300.0,
-        ), c.state_text()
-        assert c.state is MachineState.READY, c.state_text()
-        assert [a.code for a in c.alarms.views()] == []
-        assert c.pieces_total == 1 and len(c.finished_cycles) == 1
-        piece, cycle = c.finished_cycles[0]
-        assert piece.width_mm == pytest.approx(BOARD_MM, abs=0.01)
-        assert cycle.outcome.d_mm is not None and cycle.outcome.d_mm > 0
-        watch.flush_contour_error()
-        assert watch.max_contour_error_mm < 0.1
+        cut_one_board(runtime, watch, BOARD_MM)
         # everything went over the bus: SYNCs, the spindle on and off through the I/O node,
         # the drives moved and none faulted, and the station's clamps are open again
         assert station.drives["X"].sync_count - syncs_before > 1000

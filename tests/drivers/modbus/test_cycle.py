@@ -6,20 +6,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 from app.config import parse_config
-from app.data.recipe_files import load_recipe_file
 from app.drivers.contracts import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from app.machine import commands as cmd
 from app.machine.cli_simulate import Watch
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, MachineState
+from tests.drivers.cycle_helpers import cut_one_board, select_sample_recipe
 from tests.drivers.modbus.helpers import machine_table, tcp_modbus, with_port
 from tests.drivers.serial_gauge.fake_gauge import FakeGauge
 
-ROOT = Path(__file__).resolve().parents[3]
 BOARD_MM = 150.0
 
 
@@ -63,11 +60,7 @@ def test_full_automatic_cycle_on_modbus(tmp_path: Path) -> None:
         runtime.on_tick.append(lambda _rt: spindle_seen.append(world.outputs.spindle_on))
         runtime.start()
         c = runtime.controller
-        recipe = c.store.save_recipe(
-            load_recipe_file(ROOT / "resources" / "recipes" / "sample_recipes.json")[0]
-        )
-        assert recipe.id is not None
-        c.post(cmd.SelectRecipe(recipe.id))
+        select_sample_recipe(runtime)
         assert c.state is MachineState.NOT_HOMED
         c.post(cmd.Home())
         runtime.run_until(
@@ -78,22 +71,7 @@ def test_full_automatic_cycle_on_modbus(tmp_path: Path) -> None:
         world.load_board(BOARD_MM)
         runtime.run_for(0.1)
         requests_before = sum(emulator.requests.values())
-        c.post(cmd.Start())
-        runtime.run_for(2 * runtime.period_s)
-        assert runtime.run_until(
-            lambda m: (
-                m.state in LATCHED_STATES or (m.state is MachineState.READY and m.cycle is None)
-            ),
-            300.0,
-        ), c.state_text()
-        assert c.state is MachineState.READY, c.state_text()
-        assert [a.code for a in c.alarms.views()] == []
-        assert c.pieces_total == 1 and len(c.finished_cycles) == 1
-        piece, cycle = c.finished_cycles[0]
-        assert piece.width_mm == pytest.approx(BOARD_MM, abs=0.01)  # measured by the gauge
-        assert cycle.outcome.d_mm is not None and cycle.outcome.d_mm > 0
-        watch.flush_contour_error()
-        assert watch.max_contour_error_mm < 0.1
+        cut_one_board(runtime, watch, BOARD_MM)  # the width measured by the gauge
         # Everything went over the wire: the coupler switched the spindle on and off again,
         # the drives moved the cutter, and none of them faulted.
         assert any(spindle_seen) and not world.outputs.spindle_on
