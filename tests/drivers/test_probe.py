@@ -7,7 +7,6 @@ import argparse
 import json
 import subprocess
 import sys
-import threading
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -18,6 +17,7 @@ from app.drivers import cli_probe
 from app.drivers.contracts import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from tests.drivers.serial_gauge.fake_gauge import FakeGauge
+from tests.drivers.thread_guard import no_thread_left_behind  # noqa: F401 (autouse fixture)
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -38,16 +38,6 @@ name = "serial"
 [gauge.serial]
 port = "{gauge}"
 """
-
-
-@pytest.fixture(autouse=True)
-def no_thread_left_behind() -> Iterator[None]:
-    before = set(threading.enumerate())
-    yield
-    left = [t for t in threading.enumerate() if t not in before and t.is_alive()]
-    for thread in left:
-        thread.join(timeout=2.0)
-    assert not [t for t in left if t.is_alive()], f"threads left running: {left}"
 
 
 @pytest.fixture
