@@ -57,7 +57,7 @@ def run_gui(
     app = ensure_application()
     window = create_main_window(link, database, language=language, kiosk=kiosk)
     assert isinstance(window, MainWindow)
-    window.shutdownRequested.connect(app.quit)
+    window.shutdownRequested.connect(lambda: app.exit(window.exit_code))
     if kiosk:
         window.showFullScreen()
     else:

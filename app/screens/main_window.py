@@ -40,6 +40,7 @@ if TYPE_CHECKING:
 
 SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms")
 NOTICE_S = 6.0
+EXIT_LEAVE_KIOSK = 64  # packaging/: the kiosk service stays down on this exit status
 
 
 class MainWindow(QMainWindow):
@@ -64,6 +65,7 @@ class MainWindow(QMainWindow):
         self.kiosk = kiosk
         self.scale = 0.0
         self._shutting_down = False
+        self.exit_code = 0
         self._notice = ""
         self.session = Session(self._default_user, parent=self)
         self.pin_checker = PinChecker(database.path, parent=self)
@@ -181,6 +183,14 @@ class MainWindow(QMainWindow):
     # -- users and language ---------------------------------------------------------------------
 
     def user_menu(self) -> None:
+        if self.kiosk and self.session.user is not None and self.session.role >= Role.SERVICE:
+            choice = ChoiceOverlay(
+                self.tr("Service"),
+                [(self.tr("Log out"), "logout"), (self.tr("Leave the kiosk"), "leave")],
+            )
+            choice.chosen.connect(self._service_choice)
+            self.context.open(choice)
+            return
         if self.session.user is not None and self.session.role > Role.OPERATOR:
             overlay = ConfirmOverlay(
                 self.tr("Log out"),
@@ -319,6 +329,25 @@ class MainWindow(QMainWindow):
         super().resizeEvent(event)
 
     # -- shut down ----------------------------------------------------------------------------
+
+    def _service_choice(self, value: object) -> None:
+        if value == "logout":
+            self.session.logout()
+        elif value == "leave":
+            overlay = ConfirmOverlay(
+                self.tr("Leave the kiosk"),
+                self.tr("Stop the machine safely and leave the operator screen for the console?"),
+                self.tr("Leave the kiosk"),
+                danger=True,
+            )
+            overlay.finished.connect(lambda ok: self.leave_kiosk() if ok else None)
+            self.context.open(overlay)
+
+    def leave_kiosk(self) -> None:
+        """Service level: end with EXIT_LEAVE_KIOSK, which the panel's kiosk service takes as
+        "stay down" (RestartPreventExitStatus), leaving a console login on the panel."""
+        self.exit_code = EXIT_LEAVE_KIOSK
+        self.shutdown()
 
     def request_shutdown(self) -> None:
         overlay = ConfirmOverlay(

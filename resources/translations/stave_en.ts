@@ -169,7 +169,7 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+148" />
+        <location filename="../../app/screens/alarms_screen.py" line="+140" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
@@ -298,7 +298,7 @@
 <context>
     <name>ChoiceOverlay</name>
     <message>
-        <location filename="../../app/screens/widgets/dialogs.py" line="+126" />
+        <location filename="../../app/screens/widgets/dialogs.py" line="+125" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -306,7 +306,7 @@
 <context>
     <name>ConfirmOverlay</name>
     <message>
-        <location line="-70" />
+        <location line="-65" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -314,7 +314,7 @@
 <context>
     <name>FileChooser</name>
     <message>
-        <location filename="../../app/screens/widgets/file_chooser.py" line="+90" />
+        <location filename="../../app/screens/widgets/file_chooser.py" line="+81" />
         <source>▲ Up</source>
         <translation>▲ Up</translation>
     </message>
@@ -329,7 +329,7 @@
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
         <source>Save here</source>
         <translation>Save here</translation>
     </message>
@@ -339,7 +339,7 @@
         <translation>Open</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+58" />
         <source>File name</source>
         <translation>File name</translation>
     </message>
@@ -362,7 +362,7 @@
 <context>
     <name>FractionKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+342" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+346" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -513,7 +513,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+199" />
+        <location filename="../../app/screens/main_screen.py" line="+191" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -650,29 +650,42 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+159" />
+        <location filename="../../app/screens/main_window.py" line="+161" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+124" />
+        <location line="+132" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-117" />
+        <location line="-125" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
     <message>
         <location line="+18" />
+        <source>Service</source>
+        <translation>Service</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+7" />
         <location line="+4" />
         <source>Log out</source>
         <translation>Log out</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-11" />
+        <location line="+149" />
+        <location line="+2" />
+        <source>Leave the kiosk</source>
+        <translation>Leave the kiosk</translation>
+    </message>
+    <message>
+        <location line="-143" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
     </message>
@@ -739,13 +752,13 @@ shift</translation>
     </message>
     <message>
         <location line="+5" />
-        <location line="+36" />
+        <location line="+55" />
         <location line="+2" />
         <source>Shut down</source>
         <translation>Shut down</translation>
     </message>
     <message>
-        <location line="-37" />
+        <location line="-56" />
         <source>Log in or out</source>
         <translation>Log in or out</translation>
     </message>
@@ -755,7 +768,12 @@ shift</translation>
         <translation>Stave jointer</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+36" />
+        <source>Stop the machine safely and leave the operator screen for the console?</source>
+        <translation>Stop the machine safely and leave the operator screen for the console?</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>Stop the machine safely and close the program?</source>
         <translation>Stop the machine safely and close the program?</translation>
     </message>
@@ -763,7 +781,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+215" />
+        <location filename="../../app/screens/manual_screen.py" line="+207" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -881,7 +899,7 @@ shift</translation>
 <context>
     <name>MessageOverlay</name>
     <message>
-        <location filename="../../app/screens/widgets/dialogs.py" line="+25" />
+        <location filename="../../app/screens/widgets/dialogs.py" line="+21" />
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -889,7 +907,7 @@ shift</translation>
 <context>
     <name>NumberKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="-245" />
+        <location filename="../../app/screens/widgets/keypad.py" line="-229" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -1080,7 +1098,7 @@ shift</translation>
 <context>
     <name>PinPad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+253" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+221" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -1098,7 +1116,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+291" />
+        <location filename="../../app/screens/recipes_screen.py" line="+283" />
         <location line="+51" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -1533,7 +1551,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+204" />
+        <location filename="../../app/screens/system_screen.py" line="+196" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -1674,7 +1692,7 @@ Log in as technician or service to change them.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+110" />
+        <location filename="../../app/screens/widgets/keyboard.py" line="+103" />
         <source>Space</source>
         <translation>Space</translation>
     </message>

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from PySide6.QtGui import QImage
 
 from app.screens.application import create_main_window
@@ -62,3 +62,41 @@ def test_screenshots_of_every_screen_in_a_realistic_state(
         assert (image.width(), image.height()) == (1024, 768), path.name
     snapshot = machine.latest()
     assert snapshot is not None and snapshot.pieces_total >= 1  # a board was really cut
+
+
+def test_service_user_leaves_the_kiosk_with_exit_status_64(qtbot, machine, database, tap) -> None:
+    window = create_main_window(machine, database, kiosk=True)
+    assert isinstance(window, MainWindow)
+    try:
+        _leave_the_kiosk(qtbot, window, machine, tap)
+    finally:
+        # Destroy it now: a shut-down window left for later would still receive the next
+        # test's language change and read its closed database.
+        window.deleteLater()
+        QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete.value)
+
+
+def _leave_the_kiosk(qtbot, window, machine, tap) -> None:  # type: ignore[no-untyped-def]
+    from app.screens.main_window import EXIT_LEAVE_KIOSK
+    from app.screens.widgets.dialogs import ChoiceOverlay
+    from tests.screens.helpers import enter_pin, find_button
+
+    window.show()
+    tap(window.top_bar.user_button)
+    enter_pin(qtbot, window, tap, "1234")  # a technician is offered only Log out
+    tap(window.top_bar.user_button)
+    assert isinstance(window.overlay(), ConfirmOverlay)
+    window.overlay().reject()
+    window.session.logout()
+    tap(window.top_bar.user_button)
+    enter_pin(qtbot, window, tap, "9999")  # service
+    tap(window.top_bar.user_button)
+    choice = window.overlay()
+    assert isinstance(choice, ChoiceOverlay)
+    tap(find_button(choice, "choice_1"))  # Leave the kiosk
+    confirm = window.overlay()
+    assert isinstance(confirm, ConfirmOverlay)
+    with qtbot.waitSignal(window.shutdownRequested):
+        confirm.accept()
+    assert window.exit_code == EXIT_LEAVE_KIOSK == 64
+    assert not machine.alive()
