@@ -44,6 +44,14 @@ from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.readouts import AxisReadout, set_text, styled_label
 
 STEP_SIZES: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0)
+TILT_STEP_RANGE_DEG = (0.1, 1.0)  # the tilt steps 0.1 or 1 degree: 0.01 is too fine, 10 too big
+
+
+def tilt_step_deg(step_size: float) -> float:
+    """The tilt step for the selected step size: 0.01 and 0.1 -> 0.1 deg, 1 and 10 -> 1 deg."""
+    low, high = TILT_STEP_RANGE_DEG
+    return min(max(step_size, low), high)
+
 
 # (axis, direction, symbol, grid row, grid column)
 JOG_KEYS: tuple[tuple[str, int, str, int, int], ...] = (
@@ -211,7 +219,7 @@ class ManualScreen(Screen):
         self.z_caption.setText(self.tr("Tilt"))
         self.continuous_button.setText(self.tr("Continuous"))
         self.step_button.setText(self.tr("Step"))
-        self.step_caption.setText(self.tr("Step size (mm for X-Y, ° for tilt)"))
+        self.step_caption.setText(self.tr("Step size (mm for X-Y; tilt 0.1° or 1°)"))
         self.speed_caption.setText(self.tr("Jog speed and acceleration"))
         self.speed_headers[0].setText(self.tr("Speed"))
         self.speed_headers[1].setText(self.tr("Acceleration"))
@@ -257,7 +265,8 @@ class ManualScreen(Screen):
 
     def jog_pressed(self, axis: str, direction: int) -> None:
         if self.step_mode:
-            self.context.send(JogStep(axis, direction * self.step_size))
+            size = tilt_step_deg(self.step_size) if axis == "Z" else self.step_size
+            self.context.send(JogStep(axis, direction * size))
         else:
             self.context.send(JogContinuous(axis, direction))
 

@@ -781,7 +781,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+207" />
+        <location filename="../../app/screens/manual_screen.py" line="+214" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -807,8 +807,8 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Step size (mm for X-Y, ° for tilt)</source>
-        <translation>Step size (mm for X-Y, ° for tilt)</translation>
+        <source>Step size (mm for X-Y; tilt 0.1° or 1°)</source>
+        <translation>Step size (mm for X-Y; tilt 0.1° or 1°)</translation>
     </message>
     <message>
         <location line="+1" />
@@ -856,7 +856,7 @@ shift</translation>
         <translation>Waiting for the machine…</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+52" />
         <source>Jog speed %1</source>
         <translation>Jog speed %1</translation>
     </message>

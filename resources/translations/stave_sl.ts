@@ -781,7 +781,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+207"/>
+        <location filename="../../app/screens/manual_screen.py" line="+214"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -807,8 +807,8 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Step size (mm for X-Y, ° for tilt)</source>
-        <translation>Velikost koraka (mm za X-Y, ° za nagib)</translation>
+        <source>Step size (mm for X-Y; tilt 0.1° or 1°)</source>
+        <translation>Velikost koraka (mm za X-Y; nagib 0,1° ali 1°)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -856,7 +856,7 @@ izmena</translation>
         <translation>Čakam na stroj…</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Jog speed %1</source>
         <translation>Hitrost ročnega premika %1</translation>
     </message>

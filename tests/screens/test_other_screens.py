@@ -65,6 +65,9 @@ def test_step_jog_moves_by_the_step(qtbot, window, tap) -> None:
     y0 = start.axis("Y").position
     tap(find_button(window, "jog_Yplus"))
     wait_for(qtbot, window, lambda s: abs(s.axis("Y").position - (y0 + 10.0)) < 0.01)
+    z0 = start.axis("Z").position
+    tap(find_button(window, "jog_Zplus"))  # the tilt steps at most 1 degree
+    wait_for(qtbot, window, lambda s: abs(s.axis("Z").position - (z0 + 1.0)) < 0.01)
 
 
 def test_jog_speed_set_on_the_keypad(qtbot, window, tap) -> None:
