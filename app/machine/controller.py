@@ -29,7 +29,6 @@ from app.drivers.contracts import (
     DeviceEvent,
     DeviceEventKind,
     DriverError,
-    FaultInjector,
     InputImage,
     LifecycleState,
     MachineBackend,
@@ -47,7 +46,9 @@ from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.preview import build_preview, recipe_preview
 from app.machine.process_params import motion_limits, stave_limits
-from app.machine.snapshot import AxisView, CycleView, MachineSnapshot, PlanPreview
+from app.machine.sim_tools import SimulationTools
+from app.machine.snapshot import MachineSnapshot, PlanPreview
+from app.machine.snapshot_view import build_snapshot, state_text
 from app.machine.states import (
     LATCHED_STATES,
     Event,
@@ -99,7 +100,7 @@ class MachineController:
         self.gauge = gauge
         self.store = store
         self._submit = submit
-        self._wall_clock = wall_clock
+        self.wall_clock = wall_clock
         self.alarms = AlarmManager(on_transition=store.record_alarm, wall_clock=wall_clock)
         self.axes = AxisGroup(config.axes, backend.motion)
         self.manual = ManualControl(config.axes)
@@ -131,7 +132,7 @@ class MachineController:
         self._seq = 0
         self._moved_since_latch = False
         self._finished_board_on_table = False
-        self._pending_board: tuple[float | None] | None = None
+        self.sim_tools = SimulationTools(backend)
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         recipe_id = store.first_recipe_id()
         if recipe_id is not None:
@@ -335,37 +336,18 @@ class MachineController:
             self._publish_recipe_preview()
 
     def _on_ResetShiftCounter(self, _c: cmd.ResetShiftCounter) -> None:
-        self.shift_start = self._wall_clock()
+        self.shift_start = self.wall_clock()
         self.pieces_shift = 0
 
     def _on_InjectFault(self, c: cmd.InjectFault) -> None:
-        injector = self.backend.extras.get("faults")
-        if isinstance(injector, FaultInjector):
-            try:
-                injector.inject(c.kind, c.target)
-            except ValueError as exc:
-                self._refuse(str(exc))
+        if reason := self.sim_tools.inject(c.kind, c.target):
+            self._refuse(reason)
 
     def _on_ClearFaults(self, _c: cmd.ClearFaults) -> None:
-        injector = self.backend.extras.get("faults")
-        if isinstance(injector, FaultInjector):
-            injector.clear_injections()
+        self.sim_tools.clear()
 
     def _on_LoadBoard(self, c: cmd.LoadBoard) -> None:
-        """Simulation: take the board off (the part sensor must see it gone) and put a new
-        one on in the next period."""
-        world = self.backend.extras.get("world")
-        remove = getattr(world, "remove_board", None)
-        if callable(remove):
-            remove()
-            self._pending_board = (c.width_mm,)
-
-    def _load_pending_board(self) -> None:
-        if self._pending_board is not None and not self.inputs.part_present:
-            load = getattr(self.backend.extras.get("world"), "load_board", None)
-            if callable(load):
-                load(self._pending_board[0])
-            self._pending_board = None
+        self.sim_tools.replace_board(c.width_mm)
 
     def _on_SetUser(self, c: cmd.SetUser) -> None:
         self.user = c.name
@@ -432,7 +414,7 @@ class MachineController:
             return
         if not self.inputs.part_present:
             self._finished_board_on_table = False
-        self._load_pending_board()
+        self.sim_tools.tick(self.inputs.part_present)
         self._process_buttons()
         self._supervise()
         self._process_commands()
@@ -653,7 +635,7 @@ class MachineController:
     ) -> PieceRecord:
         o = cycle.outcome
         return PieceRecord(
-            self._wall_clock(),
+            self.wall_clock(),
             cycle.recipe.id,
             cycle.recipe.name,
             o.width_mm,
@@ -692,75 +674,15 @@ class MachineController:
 
     # ---------------------------------------------------------------- the picture
     def state_text(self) -> str:
-        if self.state is MachineState.AUTOMATIC and self.cycle is not None:
-            return f"automatic: {self.cycle.step.value}"
-        if self.state in LATCHED_STATES:
-            faults = self.alarms.active_faults()
-            return f"{self.state.value}: {faults[0].text}" if faults else self.state.value
-        if self.state is MachineState.MANUAL and self.homing is not None:
-            return f"manual: homing {self.homing.current_axis}"
-        if self.state is MachineState.HOMING and self.homing is not None:
-            return f"homing {self.homing.current_axis}"
-        return self.state.value
+        return state_text(self)
 
     def snapshot(self) -> MachineSnapshot:
         self._seq += 1
-        axes = tuple(
-            AxisView(
-                n,
-                self.config.axes[n].unit,
-                fb.position,
-                self.axes.command.get(n, 0.0),
-                fb.following_error,
-                fb.homed,
-                fb.enabled,
-                fb.faulted,
-                fb.fault_code,
-                fb.homing_active,
-                fb.limit_negative,
-                fb.limit_positive,
-                fb.power_state.value,
-            )
-            for n, fb in self.axes.feedback.items()
-        )
-        cycle = self.cycle
-        planned = cycle.planned if cycle is not None else None
-        cycle_view = CycleView(
-            step=cycle.step if cycle is not None else None,
-            elapsed_s=self.now_s - cycle.started_s if cycle is not None else 0.0,
-            remaining_s=cycle.remaining_s() if cycle is not None else 0.0,
-            width_mm=cycle.outcome.width_mm if cycle is not None else None,
-            d_mm=planned.profile.D if planned else None,
-            r_mm=planned.profile.R if planned else None,
-            tilt_deg=planned.tilt_deg if planned else None,
-        )
-        recipe = self.recipe
-        return MachineSnapshot(
-            seq=self._seq,
-            machine_time_s=self.now_s,
-            wall_time=self._wall_clock(),
-            state=self.state,
-            mode=self.mode,
-            state_text=self.state_text(),
-            backend=self.backend.name,
-            axes=axes,
-            inputs=self.inputs,
-            outputs=self.outputs,
-            alarms=self.alarms.views(),
-            recipe_id=recipe.id if recipe else None,
-            recipe_name=recipe.name if recipe else "",
-            pieces_shift=self.pieces_shift,
-            pieces_total=self.pieces_total,
-            last_width_mm=self.last_width_mm,
-            last_cycle_time_s=self.last_cycle_time_s,
-            cycle=cycle_view,
-            feed_override_pct=self.feed_override_pct,
-            plan_id=self._plan_id,
-            jog_xy=self.manual.speed("XY"),
-            jog_z=self.manual.speed("Z"),
-            allowed=allowed_commands(self.facts()),
-            message=self.message,
-        )
+        return build_snapshot(self, self._seq)
+
+    @property
+    def plan_id(self) -> int:
+        return self._plan_id
 
     def plan_preview(self, plan_id: int) -> PlanPreview | None:
         return self._plans.get(plan_id)

@@ -1,0 +1,85 @@
+"""The controller's state as the immutable snapshot the screens sample (see
+:mod:`app.machine.snapshot`), and the state in words for the status line."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from app.machine.permissions import allowed_commands
+from app.machine.snapshot import AxisView, CycleView, MachineSnapshot
+from app.machine.states import LATCHED_STATES, MachineState
+
+if TYPE_CHECKING:
+    from app.machine.controller import MachineController
+
+
+def state_text(c: MachineController) -> str:
+    if c.state is MachineState.AUTOMATIC and c.cycle is not None:
+        return f"automatic: {c.cycle.step.value}"
+    if c.state in LATCHED_STATES:
+        faults = c.alarms.active_faults()
+        return f"{c.state.value}: {faults[0].text}" if faults else c.state.value
+    if c.state is MachineState.MANUAL and c.homing is not None:
+        return f"manual: homing {c.homing.current_axis}"
+    if c.state is MachineState.HOMING and c.homing is not None:
+        return f"homing {c.homing.current_axis}"
+    return c.state.value
+
+
+def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
+    axes = tuple(
+        AxisView(
+            n,
+            c.config.axes[n].unit,
+            fb.position,
+            c.axes.command.get(n, 0.0),
+            fb.following_error,
+            fb.homed,
+            fb.enabled,
+            fb.faulted,
+            fb.fault_code,
+            fb.homing_active,
+            fb.limit_negative,
+            fb.limit_positive,
+            fb.power_state.value,
+        )
+        for n, fb in c.axes.feedback.items()
+    )
+    cycle = c.cycle
+    planned = cycle.planned if cycle is not None else None
+    cycle_view = CycleView(
+        step=cycle.step if cycle is not None else None,
+        elapsed_s=c.now_s - cycle.started_s if cycle is not None else 0.0,
+        remaining_s=cycle.remaining_s() if cycle is not None else 0.0,
+        width_mm=cycle.outcome.width_mm if cycle is not None else None,
+        d_mm=planned.profile.D if planned else None,
+        r_mm=planned.profile.R if planned else None,
+        tilt_deg=planned.tilt_deg if planned else None,
+    )
+    recipe = c.recipe
+    return MachineSnapshot(
+        seq=seq,
+        machine_time_s=c.now_s,
+        wall_time=c.wall_clock(),
+        state=c.state,
+        mode=c.mode,
+        state_text=state_text(c),
+        backend=c.backend.name,
+        axes=axes,
+        inputs=c.inputs,
+        outputs=c.outputs,
+        alarms=c.alarms.views(),
+        recipe_id=recipe.id if recipe else None,
+        recipe_name=recipe.name if recipe else "",
+        pieces_shift=c.pieces_shift,
+        pieces_total=c.pieces_total,
+        last_width_mm=c.last_width_mm,
+        last_cycle_time_s=c.last_cycle_time_s,
+        cycle=cycle_view,
+        feed_override_pct=c.feed_override_pct,
+        plan_id=c.plan_id,
+        jog_xy=c.manual.speed("XY"),
+        jog_z=c.manual.speed("Z"),
+        allowed=allowed_commands(c.facts()),
+        message=c.message,
+    )
