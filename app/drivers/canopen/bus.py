@@ -12,6 +12,12 @@ deciding that a node is lost) runs in the machine loop's thread, in the backend'
 Failures are never silent: a dead notifier thread is found by ``Network.check()`` on every
 read and send and becomes a RECEIVE_THREAD_DIED event plus a CommunicationError; a node
 whose heartbeat stops becomes COMMUNICATION_LOST for the device that owns it.
+
+The controller's own heartbeat (:mod:`app.drivers.canopen.master_heartbeat`, node
+``master_node_id``) belongs to the bus too, since it is one frame for the whole network: the
+motion backend starts it on activation and stops it on deactivation; disconnecting stops it
+before the bus is closed. Its sender dying unasked is found by
+:meth:`CanopenBus.check_master_heartbeat` on every read of the motion backend.
 """
 
 from __future__ import annotations
@@ -30,6 +36,7 @@ from canopen.emcy import EmcyError
 from canopen.objectdictionary import ObjectDictionary
 
 from app.drivers.canopen.emcy_codes import emcy_text
+from app.drivers.canopen.master_heartbeat import MasterHeartbeat
 from app.drivers.canopen.settings import CanopenSettings
 from app.drivers.canopen.watchdog import HeartbeatChange, HeartbeatWatchdog
 from app.drivers.contracts import CommunicationError, DeviceEvent, DeviceEventKind, DriverError
@@ -68,6 +75,8 @@ class CanopenBus:
         self.label = f"CAN {settings.interface}:{settings.channel}"
         self.condition = threading.Condition()
         self.watchdog = HeartbeatWatchdog(settings.heartbeat_timeout_ms / 1000.0, clock)
+        self.master_heartbeat = MasterHeartbeat(settings.master_node_id, settings.heartbeat_ms)
+        self._master_failure_reported = False
         self._network: canopen.Network | None = None
         self._users = 0
         self._nodes: dict[int, _NodeEntry] = {}
@@ -111,6 +120,7 @@ class CanopenBus:
     def _disconnect(self) -> None:
         if self._network is None:
             return
+        self.master_heartbeat.stop()  # before the bus closes under its sender
         network, self._network = self._network, None
         self._nodes.clear()
         try:
@@ -247,6 +257,53 @@ class CanopenBus:
         except Exception as exc:
             self.check()  # a dead receive thread explains it best
             raise CommunicationError(self.label, f"sending 0x{cob_id:03X} failed: {exc}") from exc
+
+    def start_master_heartbeat(self) -> None:
+        """Start the controller's heartbeat (no-op while it runs)."""
+        bus = self.network.bus
+        if bus is None:
+            raise CommunicationError(self.label, "not connected")
+        if self.master_heartbeat.running and not self.master_heartbeat.failure():
+            return
+        try:
+            self.master_heartbeat.start(bus)
+            self._master_failure_reported = False
+        except (can.CanError, OSError, ValueError, NotImplementedError) as exc:
+            raise CommunicationError(
+                self.label,
+                f"cannot start the controller's heartbeat "
+                f"(COB-ID 0x{self.master_heartbeat.cob_id:03X}): {exc}",
+            ) from exc
+        log.info(
+            "%s: controller heartbeat 0x%03X every %g ms",
+            self.label,
+            self.master_heartbeat.cob_id,
+            1000 * self.master_heartbeat.period_s,
+        )
+
+    def stop_master_heartbeat(self) -> None:
+        """Stop the controller's heartbeat (no-op when stopped); never raises."""
+        if self.master_heartbeat.running:
+            self.master_heartbeat.stop()
+            log.info("%s: controller heartbeat stopped", self.label)
+
+    def check_master_heartbeat(self, owner: str) -> None:
+        """Raise CommunicationError when the controller's heartbeat stopped although
+        :meth:`stop_master_heartbeat` was not called; the first time it is also queued as
+        COMMUNICATION_LOST (device: the bus) for ``owner``, the device whose nodes watch it."""
+        text = self.master_heartbeat.failure()
+        if not text:
+            return
+        with self.condition:
+            first = not self._master_failure_reported
+            self._master_failure_reported = True
+            if first:
+                self._queues[owner].append(
+                    DeviceEvent(DeviceEventKind.COMMUNICATION_LOST, self.label, 0, text)
+                )
+        if first:
+            log.error("%s: %s", self.label, text)
+        raise CommunicationError(self.label, text)
 
     def sync(self, *, feedback: bool = False) -> int:
         """Send one SYNC; returns its number. ``feedback``: sent by a read (a tool that does
@@ -388,6 +445,11 @@ class CanopenBus:
             "link": f"{settings.interface} {settings.channel} {settings.bitrate // 1000} kbit/s",
             "cyclic bus load (computed)": settings.bus_load().describe(),
             "heartbeat ms": f"{settings.heartbeat_ms} (timeout {settings.heartbeat_timeout_ms})",
+            "controller heartbeat": (
+                f"node {settings.master_node_id}, drives stop after "
+                f"{settings.master_heartbeat_timeout_ms} ms of silence"
+                + (", sending" if self.master_heartbeat.running else ", not sending")
+            ),
             "SYNCs sent": self.sync_seq,
         }
         for node_id, entry in sorted(self._nodes.items()):

@@ -13,6 +13,19 @@ configuration, heartbeat, NMT start) and the same rules when a node is lost. Tho
 - ``deactivate()`` never raises for a dead link: the machine layer calls it before it
   reconnects, and a dead node cannot be reached anyway.
 
+The controller's heartbeat (``consumes_master_heartbeat``: the drives): ``configure()``
+writes each node's consumer heartbeat time 0x1016 sub 1 (``master_node_id`` << 16 |
+``master_heartbeat_timeout_ms``), and a node that refuses fails the configuration: a drive
+that cannot watch the controller would not stop by itself if the controller died.
+``activate()`` starts the heartbeat before NMT start (a CiA 301 consumer starts watching at
+the first heartbeat it hears). ``deactivate()`` first switches the consumer off (0x1016 sub 1
+= 0) in every node that is reachable and known to be safe (its power stage off), then stops
+the heartbeat, so that a deactivated, disabled drive does not fault for a silence it was
+meant to have; a node left watching (unreachable, or not confirmed disabled) faults on its
+own once the heartbeat stops, which is the safe direction. ``activate()`` switches those
+consumers on again. Losing a node does not stop the heartbeat: the drives keep watching the
+controller until deactivation, or until the process ends.
+
 Time: every wait here is on a condition (frames arriving), bounded by a timeout from the
 settings; nothing sleeps.
 """
@@ -25,7 +38,12 @@ from abc import abstractmethod
 from collections.abc import Callable
 
 from app.drivers.canopen.bus import NMT_STATE_NAMES, CanopenBus
-from app.drivers.canopen.objects import DEVICE_TYPE, PRODUCER_HEARTBEAT_TIME
+from app.drivers.canopen.master_heartbeat import consumer_heartbeat_entry
+from app.drivers.canopen.objects import (
+    CONSUMER_HEARTBEAT_TIME,
+    DEVICE_TYPE,
+    PRODUCER_HEARTBEAT_TIME,
+)
 from app.drivers.canopen.settings import CanopenSettings
 from app.drivers.canopen.watchdog import NMT_OPERATIONAL
 from app.drivers.contracts import (
@@ -44,6 +62,7 @@ class CanopenDevice:
 
     owner = ""  # "motion" or "io": the bus routes this group's events by it
     profile = 0  # CiA device profile the nodes must report in 0x1000 (402, 401)
+    consumes_master_heartbeat = False  # the nodes watch the controller's heartbeat (0x1016)
 
     def __init__(self, bus: CanopenBus, settings: CanopenSettings) -> None:
         self._bus = bus
@@ -55,6 +74,7 @@ class CanopenDevice:
         self._read_seq = -1
         self._checked_seq = -1
         self._missed: dict[int, int] = {}
+        self._disarmed: set[int] = set()  # consumers deactivate() switched off
 
     # ---- what a group provides ----
     @property
@@ -116,6 +136,8 @@ class CanopenDevice:
                     self._settings.heartbeat_ms.to_bytes(2, "little"),
                     "producer heartbeat time",
                 )
+                if self.consumes_master_heartbeat:
+                    self._write_consumer(node_id, armed=True)
                 self._configure_node(node_id)
             self._wait_nodes(lambda n: self._bus.beats(n) > beats[n], "no heartbeat")
         except DriverError:
@@ -124,6 +146,7 @@ class CanopenDevice:
             raise
         self._fault = ""
         self._missed = {n: 0 for n in self._nodes()}
+        self._disarmed.clear()
         self._state = LifecycleState.INACTIVE
         log.info("%s configured", self.device_label)
 
@@ -133,6 +156,11 @@ class CanopenDevice:
                 self.device_label, f"cannot activate from {self._state.value}; configure first"
             )
         try:
+            if self.consumes_master_heartbeat:
+                for node_id in sorted(self._disarmed):
+                    self._write_consumer(node_id, armed=True)
+                    self._disarmed.discard(node_id)
+                self._bus.start_master_heartbeat()
             self._bus.watchdog.watch(self._nodes())
             for node_id in self._nodes():
                 self._bus.nmt(node_id, "OPERATIONAL")
@@ -161,10 +189,12 @@ class CanopenDevice:
                 self._bus.nmt(node_id, "PRE-OPERATIONAL")
         except DriverError as exc:
             log.warning("%s: deactivate: %s", self.device_label, exc)
+            self._end_master_heartbeat(disarm=False)  # the drives stop on their own
             if was_active:
                 self._state = LifecycleState.ERROR
                 self._fault, self._fault_device = str(exc), exc.device
             return
+        self._end_master_heartbeat(disarm=True)
         if was_active:
             self._state = LifecycleState.INACTIVE
         log.info("%s deactivated", self.device_label)
@@ -182,6 +212,63 @@ class CanopenDevice:
             return []
         self._bus.supervise()  # heartbeats, and a receive thread that died meanwhile
         return self._bus.events(self.owner)
+
+    # ---- the controller's heartbeat ----
+    def _write_consumer(self, node_id: int, *, armed: bool) -> None:
+        """0x1016 sub 1: watch the controller's heartbeat (``armed``) or stop watching (0)."""
+        settings = self._settings
+        value = (
+            consumer_heartbeat_entry(settings.master_node_id, settings.master_heartbeat_timeout_ms)
+            if armed
+            else 0
+        )
+        what = (
+            f"consumer heartbeat time (controller node {settings.master_node_id}, "
+            f"{settings.master_heartbeat_timeout_ms} ms)"
+            if armed
+            else "consumer heartbeat time (off)"
+        )
+        try:
+            self._bus.sdo_download(
+                node_id, CONSUMER_HEARTBEAT_TIME, 1, value.to_bytes(4, "little"), what
+            )
+        except CommunicationError:
+            raise
+        except DriverError as exc:
+            if not armed:
+                raise
+            reason = str(exc).removeprefix(f"{exc.device}: ")
+            raise DriverError(
+                exc.device,
+                f"{reason}: the node cannot watch the controller's heartbeat, so it would "
+                "not stop by itself if the controller died",
+                exc.code,
+            ) from exc
+
+    def _disarmable(self, node_id: int) -> bool:
+        """May deactivate() switch this node's consumer off? Only if it can be reached;
+        subclasses add what makes it safe (a drive's power stage is off)."""
+        return not self._bus.lost_reason(node_id)
+
+    def _end_master_heartbeat(self, *, disarm: bool) -> None:
+        """Switch the safe nodes' consumers off (``disarm``), then stop the heartbeat."""
+        if not self.consumes_master_heartbeat:
+            return
+        nodes = self._nodes() if disarm else {}
+        for node_id, label in nodes.items():
+            if not self._disarmable(node_id):
+                log.warning(
+                    "%s keeps watching the controller's heartbeat: it faults once it stops",
+                    label,
+                )
+                continue
+            try:
+                self._write_consumer(node_id, armed=False)
+            except DriverError as exc:
+                log.warning("%s: deactivate: %s", self.device_label, exc)
+                continue
+            self._disarmed.add(node_id)
+        self._bus.stop_master_heartbeat()
 
     # ---- helpers for the subclasses ----
     def _answered(self, seq: int) -> bool:
@@ -240,6 +327,8 @@ class CanopenDevice:
         """Once per read: receive thread alive, every node heard and OPERATIONAL."""
         try:
             self._bus.check()
+            if self.consumes_master_heartbeat:
+                self._bus.check_master_heartbeat(self.owner)
         except CommunicationError as exc:
             raise self._lose(exc.device, str(exc)) from exc
         self._bus.supervise()

@@ -14,7 +14,12 @@ Safety rules kept here (see cia402.py for the controlword itself):
 - a lost node (heartbeat, reboot, missing TPDOs, dead receive thread) latches the backend in
   ERROR, sends quick stop (controlword 0x02) and one SYNC to every drive, and clears the
   homed flag of the lost drives (they may have been power-cycled unseen);
-- the backend never resets or enables a drive by itself.
+- the backend never resets or enables a drive by itself;
+- every drive watches the controller's heartbeat (0x1016, see ``device.py`` and
+  ``master_heartbeat.py``): if the machine process dies or the controller's CAN connection
+  is lost, an enabled drive faults by itself (EMCY 0x8130) after
+  ``master_heartbeat_timeout_ms``, without waiting for SYNC loss. Deactivation switches a
+  drive's consumer off only once its answers show the power stage off.
 """
 
 from __future__ import annotations
@@ -120,9 +125,17 @@ class _Axis:
         )
 
 
+POWERED_STATES = (
+    Cia402State.OPERATION_ENABLED,
+    Cia402State.QUICK_STOP_ACTIVE,
+    Cia402State.FAULT_REACTION_ACTIVE,
+)
+
+
 class CanopenMotion(CanopenDevice, MotionBackend):
     owner = "motion"
     profile = obj.PROFILE_DRIVE
+    consumes_master_heartbeat = True
 
     def __init__(self, bus: CanopenBus, settings: CanopenSettings, config: MachineConfig) -> None:
         super().__init__(bus, settings)
@@ -305,6 +318,16 @@ class CanopenMotion(CanopenDevice, MotionBackend):
                 ):
                     return
         log.warning("%s: not every drive confirmed it is disabled", self.device_label)
+
+    def _disarmable(self, node_id: int) -> bool:
+        """A drive stops watching the controller only when its latest answer shows the power
+        stage off: one that did not take the disable keeps its watchdog."""
+        if not super()._disarmable(node_id):
+            return False
+        with self._bus.condition:
+            sample = self._by_node[node_id].sample
+            statusword = sample.statusword if sample is not None else None
+        return statusword is not None and decode_statusword(statusword) not in POWERED_STATES
 
     def _on_lost(self) -> None:
         """Quick stop every drive (they decelerate and hold); the lost one too, in case it

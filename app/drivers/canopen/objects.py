@@ -26,6 +26,7 @@ DEVICE_TYPE = 0x1000  # device type: low word = profile number (402 drive, 401 I
 ERROR_REGISTER = 0x1001  # error register
 SYNC_COB_ID = 0x1005  # COB-ID SYNC
 COMM_CYCLE_PERIOD = 0x1006  # communication cycle period, microseconds
+CONSUMER_HEARTBEAT_TIME = 0x1016  # consumer heartbeat time: producer id << 16 | timeout ms
 PRODUCER_HEARTBEAT_TIME = 0x1017  # producer heartbeat time, ms
 RPDO_COMM = 0x1400  # RPDO communication parameter, +n for RPDO n+1
 RPDO_MAPPING = 0x1600  # RPDO mapping parameter
@@ -191,6 +192,8 @@ def build_drive_od(node_id: int) -> ObjectDictionary:
     od = ObjectDictionary()  # type: ignore[no-untyped-call]
     od.node_id = node_id
     _communication_objects(od, node_id, 0x00020000 | PROFILE_DRIVE)  # servo drive, 402
+    # sub 1 watches the controller's heartbeat (master_heartbeat.py)
+    _array(od, "Consumer heartbeat time", CONSUMER_HEARTBEAT_TIME, 1, UNSIGNED32, "rw")
     _add(od, _var("Error code", ERROR_CODE, 0, UNSIGNED16, "ro", mappable=True))
     _add(od, _var("Controlword", CONTROLWORD, 0, UNSIGNED16, "rw", mappable=True))
     _add(od, _var("Statusword", STATUSWORD, 0, UNSIGNED16, "ro", mappable=True))

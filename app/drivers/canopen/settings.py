@@ -2,9 +2,11 @@
 
 Why strict: these values decide which node a setpoint goes to and how many encoder counts a
 millimetre is. A wrong default would move an axis ten times too far, so node ids, scaling
-and the I/O wiring have no defaults; everything else has a safe one. Every bad value raises
-``ConfigError`` with the dotted key (``backend.canopen.axes.X.node_id``), the value and what
-is allowed, like the rest of the configuration.
+and the I/O wiring have no defaults; everything else has a safe one. The controller's own
+node id (``master_node_id``, for the heartbeat the drives watch) defaults to 127, the usual
+id of a CANopen manager, and must differ from every drive's and the I/O node's id. Every bad
+value raises ``ConfigError`` with the dotted key (``backend.canopen.axes.X.node_id``), the
+value and what is allowed, like the rest of the configuration.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from typing import Any
 
 from app.config import AxisConfig, ConfigError, MachineConfig, Section
 from app.drivers.canopen.busload import MAX_BUS_LOAD, BusLoad, bus_load
+from app.drivers.canopen.master_heartbeat import CONSUMER_TIMEOUT_MAX_MS
 from app.drivers.canopen.pdo import cyclic_frames
 from app.drivers.contracts import InputImage, OutputImage
 
@@ -56,6 +59,7 @@ HOMING_METHODS: frozenset[int] = frozenset(
 INPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(InputImage))
 OUTPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(OutputImage))
 IO_BITS = 16  # a CiA 401 node with up to two bytes of inputs and two of outputs
+DEFAULT_MASTER_NODE_ID = 127  # the usual node id of a CANopen manager (NMT master)
 
 
 @dataclass(frozen=True)
@@ -101,8 +105,10 @@ class CanopenSettings:
     channel: str | int
     bitrate: int
     period_s: float  # SYNC period: one SYNC per write_setpoints, i.e. backend.period_ms
-    heartbeat_ms: int  # producer heartbeat time written to every node (0x1017)
+    heartbeat_ms: int  # producer heartbeat time of every node (0x1017) and of ours
     heartbeat_timeout_ms: int  # our consumer: a node silent this long is lost
+    master_node_id: int  # the controller's node id: its heartbeat is 0x700 + this
+    master_heartbeat_timeout_ms: int  # the drives' consumer (0x1016): controller silent
     sdo_timeout_ms: int
     startup_timeout_ms: int  # wait for first heartbeat / first TPDO at start-up
     pdo_miss_limit: int  # consecutive SYNCs without a drive's TPDO1 before it is lost
@@ -119,7 +125,7 @@ class CanopenSettings:
             len(self.axes),
             self.slow_feedback_every_n_sync,
             self.io.input_bytes,
-            len(self.node_ids),
+            len(self.node_ids) + 1,  # and the controller's own heartbeat
             self.heartbeat_ms,
             self.period_s,
         )
@@ -252,6 +258,23 @@ def parse_settings(raw: Mapping[str, Any], config: MachineConfig) -> CanopenSett
             timeout_ms,
             f"at least 1.5 x heartbeat_ms ({1.5 * heartbeat_ms:g})",
         )
+    master_node_id = root.integer(
+        "master_node_id", DEFAULT_MASTER_NODE_ID, 1, 127, " (the controller's own node id)"
+    )
+    master_timeout_ms = root.integer(
+        "master_heartbeat_timeout_ms",
+        round(2.5 * heartbeat_ms),
+        15,
+        CONSUMER_TIMEOUT_MAX_MS,
+        " (the drives stop when the controller's heartbeat is silent this long)",
+    )
+    if master_timeout_ms < 1.5 * heartbeat_ms:
+        raise root.error(
+            "master_heartbeat_timeout_ms",
+            master_timeout_ms,
+            f"at least 1.5 x heartbeat_ms ({1.5 * heartbeat_ms:g}): the controller's heartbeat "
+            "is sent every heartbeat_ms",
+        )
     sdo_timeout_ms = root.integer("sdo_timeout_ms", 300, 10, 10_000)
     startup_ms = root.integer("startup_timeout_ms", max(1000, 2 * timeout_ms), 10, 60_000)
     miss_limit = root.integer("pdo_miss_limit", 5, 1, 1000)
@@ -270,6 +293,7 @@ def parse_settings(raw: Mapping[str, Any], config: MachineConfig) -> CanopenSett
     for key, node_id in [
         *((f"axes.{n}.node_id", a.node_id) for n, a in axes.items()),
         ("io.node_id", io.node_id),
+        ("master_node_id", master_node_id),
     ]:
         if node_id in seen:
             raise ConfigError(
@@ -286,6 +310,8 @@ def parse_settings(raw: Mapping[str, Any], config: MachineConfig) -> CanopenSett
         config.period_s,
         heartbeat_ms,
         timeout_ms,
+        master_node_id,
+        master_timeout_ms,
         sdo_timeout_ms,
         startup_ms,
         miss_limit,

@@ -36,7 +36,7 @@ def test_probe_reads_drives_and_io_without_enabling(channel, bench: Bench, tmp_p
     assert axes["Z"]["homed"] and not axes["X"]["homed"]
     assert report["inputs"]["estop_ok"] and report["inputs"]["guard_closed"]
     link = report["link"]["canopen"]
-    assert link["cyclic bus load (computed)"].startswith("19.8-24.0 %")
+    assert link["cyclic bus load (computed)"].startswith("19.9-24.1 %")
     assert link["Y (node 2)"] == "OPERATIONAL"
     for drive in bench.drives.values():  # never enabled: only "disable voltage" was sent
         assert {cw for _, cw in drive.record.controlwords} == {0x00}
