@@ -2,7 +2,8 @@
 configuration naming that channel, and the backend under test.
 
 Real time: the bus is real-time (heartbeats, timeouts), so these tests wait on conditions
-(frames arriving) with short bounds; the heartbeat is 50 ms and its timeout 250 ms.
+(frames arriving) with short bounds; the heartbeat is 50 ms and its timeout 250 ms, both ways
+(our watchdog of the nodes, the drives' consumer of the controller's heartbeat).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
         "bitrate": 1_000_000,
         "heartbeat_ms": 50,
         "heartbeat_timeout_ms": 250,
+        "master_heartbeat_timeout_ms": 250,
         "sdo_timeout_ms": 300,
         "startup_timeout_ms": 1000,
         "pdo_miss_limit": 25,

@@ -8,6 +8,13 @@ LocalNode lacks and a real node does, as the engineering guide says:
   STOPPED, reset node/communication sends a boot-up message and goes to PRE-OPERATIONAL;
 - a heartbeat producer (0x1017) on a thread of our own, so that a test can silence it and
   ``close()`` can join it before the bus goes away;
+- a heartbeat consumer (0x1016 sub 1, in the drives' dictionary) on a thread of our own, as
+  CiA 301 has it: it starts watching the named producer at the first heartbeat it hears after
+  being configured (or after its last event), and a silence longer than the configured time
+  is one heartbeat event (``on_heartbeat_event``), after which it waits for the next
+  heartbeat; writing 0 switches it off. A drive faults on the event while its power stage is
+  on (0x8130, EMCY), like a real drive with abort-connection option "fault" (0x6007 = 1); its
+  NMT state does not change (0x1029 "no state change");
 - PDOs driven by the communication and mapping objects the master downloads (CiA 301
   procedure checked: mapping only while the PDO is invalid and its count is 0), RPDOs taken
   at the next SYNC (types 0-240) or at once (254/255), TPDOs sent on every n-th SYNC;
@@ -22,6 +29,7 @@ the backend under test has its own Network on the same channel name.
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -32,6 +40,7 @@ from canopen.objectdictionary import ObjectDictionary, ODVariable
 from canopen.sdo import SdoAbortedError
 
 from app.drivers.canopen import objects as obj
+from app.drivers.canopen.master_heartbeat import HEARTBEAT_COB_BASE, split_consumer_heartbeat_entry
 from app.drivers.contracts import Cia402State
 
 S = Cia402State
@@ -49,6 +58,8 @@ ABORT_VALUE_RANGE = 0x06090030
 ABORT_UNSUPPORTED_ACCESS = 0x06010000
 ABORT_NOT_MAPPABLE = 0x06040041
 ABORT_PDO_LENGTH = 0x06040042
+EMCY_HEARTBEAT = 0x8130  # CiA 301: life guard or heartbeat error
+POWERED = (Cia402State.OPERATION_ENABLED, Cia402State.QUICK_STOP_ACTIVE)
 
 
 class _HeartbeatProducer:
@@ -94,6 +105,70 @@ class _HeartbeatProducer:
                 self._send()
 
 
+class _HeartbeatConsumer:
+    """Watches one producer's heartbeat (CiA 301 consumer); joinable, its own thread.
+
+    Off until configured with a time; then idle until a heartbeat is heard, watching from
+    that heartbeat on; a silence longer than the time calls ``on_event`` once (outside this
+    object's lock) and makes it idle again until the next heartbeat."""
+
+    def __init__(self, on_event: Callable[[], None]) -> None:
+        self._on_event = on_event
+        self._cond = threading.Condition()
+        self._timeout_s = 0.0  # 0: off
+        self._last: float | None = None  # monotonic time of the last heartbeat; None: idle
+        self._stopped = False
+        self.events = 0  # heartbeat events so far (for the tests' assertions)
+        self._thread = threading.Thread(target=self._run, name="sim hb consumer", daemon=True)
+        self._thread.start()
+
+    def configure(self, timeout_ms: int) -> None:
+        with self._cond:
+            self._timeout_s = timeout_ms / 1000.0
+            self._last = None
+            self._cond.notify_all()
+
+    def heard(self) -> None:
+        """A heartbeat of the watched producer arrived (receive thread)."""
+        with self._cond:
+            if self._timeout_s > 0:
+                self._last = time.monotonic()
+                self._cond.notify_all()
+
+    @property
+    def watching(self) -> bool:
+        with self._cond:
+            return self._timeout_s > 0 and self._last is not None
+
+    def wait_events(self, count: int, timeout_s: float) -> bool:
+        with self._cond:
+            return self._cond.wait_for(lambda: self.events >= count, timeout_s)
+
+    def close(self) -> None:
+        with self._cond:
+            self._stopped = True
+            self._cond.notify_all()
+        self._thread.join()
+
+    def _run(self) -> None:
+        while True:
+            with self._cond:
+                self._cond.wait_for(
+                    lambda: self._stopped or (self._timeout_s > 0 and self._last is not None)
+                )
+                if self._stopped:
+                    return
+                assert self._last is not None
+                remaining_s = self._last + self._timeout_s - time.monotonic()
+                if remaining_s > 0:
+                    self._cond.wait(remaining_s)  # a heartbeat, a new time or close: re-check
+                    continue
+                self._last = None  # the event: idle until the next heartbeat
+                self.events += 1
+                self._cond.notify_all()
+            self._on_event()
+
+
 class _SimNmt(NmtSlave):
     """canopen's NMT slave with the heartbeat handed to our producer."""
 
@@ -128,8 +203,11 @@ class SimNode:
         self.lock = threading.RLock()
         self.changed = threading.Condition(self.lock)
         self.reject: dict[tuple[int, int], int] = {}  # (index, sub) -> SDO abort code
+        self.rpdos_dropped = False  # test control: a receive path that loses every RPDO
         self.node = canopen.LocalNode(node_id, od)
         self._producer = _HeartbeatProducer(self._beat)
+        self.consumer = _HeartbeatConsumer(self._on_heartbeat_event)
+        self._consumer_cob: int | None = None  # heartbeat COB-ID the consumer listens to
         old_nmt = self.node.nmt
         self.node.nmt = _SimNmt(node_id, self.node, self._producer)
         self.node._write_callbacks.remove(old_nmt.on_write)  # private: the NMT slave was replaced
@@ -168,6 +246,7 @@ class SimNode:
         with self.lock:
             self.node.data_store.clear()
             self._reset_pdo_subscriptions()
+            self._set_consumer(0)
             self.reset_application()
             self.boot()
 
@@ -192,6 +271,7 @@ class SimNode:
                     if 0x1000 <= index < 0x2000:
                         del self.node.data_store[index]
                 self._reset_pdo_subscriptions()
+                self._set_consumer(0)
                 self.boot()
             self.changed.notify_all()
 
@@ -201,6 +281,29 @@ class SimNode:
 
     def silence_heartbeat(self, silenced: bool = True) -> None:
         self._producer.silence(silenced)
+
+    # ---- heartbeat consumer (0x1016 sub 1) ----
+    def _set_consumer(self, entry: int) -> None:
+        """Watch the producer an 0x1016 entry names, for its time; 0 switches it off."""
+        producer, timeout_ms = split_consumer_heartbeat_entry(entry)
+        if self._consumer_cob is not None:
+            self.network.network.unsubscribe(self._consumer_cob, self._on_consumed_heartbeat)
+            self._consumer_cob = None
+        if producer and timeout_ms:
+            self._consumer_cob = HEARTBEAT_COB_BASE + producer
+            self.network.network.subscribe(self._consumer_cob, self._on_consumed_heartbeat)
+        self.consumer.configure(timeout_ms if producer else 0)
+
+    def _on_consumed_heartbeat(self, can_id: int, data: bytearray, timestamp: float) -> None:
+        self.consumer.heard()
+
+    def _on_heartbeat_event(self) -> None:
+        with self.lock:
+            self.on_heartbeat_event()
+            self.changed.notify_all()
+
+    def on_heartbeat_event(self) -> None:
+        """Hook: the watched producer was silent longer than the consumer time."""
 
     # ---- SDO ----
     def _on_sdo(self, can_id: int, data: bytearray, timestamp: float) -> None:
@@ -229,6 +332,8 @@ class SimNode:
         value = od.decode_raw(data)
         self._check_pdo_write(index, subindex, value)
         self.on_write(index, subindex, value)
+        if index == obj.CONSUMER_HEARTBEAT_TIME and subindex == 1:
+            self._set_consumer(int(value))
         if subindex == 1 and obj.RPDO_COMM <= index < obj.RPDO_COMM + obj.PDO_SLOTS:
             self._subscribe_rpdo(index - obj.RPDO_COMM + 1, int(value))
         self.changed.notify_all()
@@ -297,7 +402,7 @@ class SimNode:
 
     def _on_rpdo(self, can_id: int, data: bytearray, timestamp: float) -> None:
         with self.lock:
-            if self.nmt_state != "OPERATIONAL":
+            if self.nmt_state != "OPERATIONAL" or self.rpdos_dropped:
                 return
             for number, cob_id in self._rpdo_cobs.items():
                 if cob_id != can_id:
@@ -369,6 +474,7 @@ class SimNode:
 
     def close(self) -> None:
         self._producer.close()
+        self.consumer.close()
 
 
 class _RemoteFrameListener(can.Listener):
@@ -474,13 +580,19 @@ class SimDrive(SimNode):
         max_counts_per_sync: int = 10**9,
         homing_syncs: int = 5,
         homing_overshoot_counts: int = 0,
+        *,
+        heartbeat_consumer: bool = True,
     ) -> None:
+        """``heartbeat_consumer=False``: a drive without object 0x1016."""
         self.initial_position = position_counts
         self.homing_overshoot_counts = homing_overshoot_counts  # stops past the switch edge
         self.max_counts_per_sync = max_counts_per_sync
         self.homing_syncs = homing_syncs
         self.record = DriveRecord()
-        super().__init__(network, node_id, obj.build_drive_od(node_id))
+        od = obj.build_drive_od(node_id)
+        if not heartbeat_consumer:
+            del od[obj.CONSUMER_HEARTBEAT_TIME]
+        super().__init__(network, node_id, od)
 
     def reset_application(self) -> None:
         with self.lock:
@@ -509,6 +621,13 @@ class SimDrive(SimNode):
             self.homing_left = -1
             self._emcy(code)
             self.changed.notify_all()
+
+    def on_heartbeat_event(self) -> None:
+        """The controller is silent: with the power stage on, fault (0x8130, EMCY). The fault
+        reaction ends on the drive's own clock: no SYNC will come to finish it."""
+        if self.state in POWERED:
+            self.inject_fault(EMCY_HEARTBEAT)
+            self.state = S.FAULT  # 14
 
     def clear_fault_cause(self) -> None:
         with self.lock:
