@@ -203,6 +203,7 @@ class CanopenBus:
             self._queues[entry.owner].append(
                 DeviceEvent(DeviceEventKind.EMERGENCY, entry.label, code, text)
             )
+            self.condition.notify_all()
         log.warning("%s: EMCY 0x%04X %s", entry.label, code, text)
 
     def last_emcy_code(self, node_id: int) -> int:

@@ -219,6 +219,7 @@ class SimNode:
         self._rpdo_pending: dict[int, bytes] = {}
         self._tpdos = {n: _Tpdo() for n in range(1, obj.PDO_SLOTS + 1)}
         self.sync_count = 0
+        self.heartbeats_sent = 0
         self.guard_toggle = 0
         self.reset_application()  # device state exists before the first frame can arrive
         raw = network.network
@@ -278,6 +279,9 @@ class SimNode:
     def _beat(self) -> None:
         state = NMT_STATE_CODES.get(self.nmt_state, 0x7F)
         self.network.send(0x700 + self.node_id, bytes([state]))
+        with self.lock:
+            self.heartbeats_sent += 1
+            self.changed.notify_all()
 
     def silence_heartbeat(self, silenced: bool = True) -> None:
         self._producer.silence(silenced)

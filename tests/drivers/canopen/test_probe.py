@@ -8,6 +8,7 @@ import json
 from pathlib import Path
 
 from app.drivers import cli_probe
+from app.drivers.canopen import objects as obj
 from app.resources import resource_path
 from tests.drivers.canopen.conftest import Bench
 
@@ -38,9 +39,12 @@ def test_probe_reads_drives_and_io_without_enabling(channel, bench: Bench, tmp_p
     link = report["link"]["canopen"]
     assert link["cyclic bus load (computed)"].startswith("19.9-24.1 %")
     assert link["Y (node 2)"] == "OPERATIONAL"
+    assert link["controller heartbeat"].startswith("node 127, drives stop after 250 ms")
     for drive in bench.drives.values():  # never enabled: only "disable voltage" was sent
         assert {cw for _, cw in drive.record.controlwords} == {0x00}
         assert drive.wait(lambda d=drive: d.nmt_state == "PRE-OPERATIONAL")  # left tidy
+        assert drive.read(obj.CONSUMER_HEARTBEAT_TIME, 1) == 0  # no longer watching us
+        assert drive.consumer.events == 0 and drive.record.emcy_sent == []
 
 
 def test_probe_names_the_node_that_does_not_answer(channel, bench: Bench, tmp_path, capsys):

@@ -1,6 +1,6 @@
 """The pure rules, without a bus: controlword table, fault reset, homing phases, the
 simulated drive's transition table, the heartbeat watchdog on a simulated clock, bus load,
-EMCY texts, PDO packing and the settings reader."""
+EMCY texts, PDO packing, the consumer heartbeat entry and the settings reader."""
 
 from __future__ import annotations
 
@@ -18,6 +18,10 @@ from app.drivers.canopen.cia402 import (
     PowerRequest,
 )
 from app.drivers.canopen.emcy_codes import emcy_text
+from app.drivers.canopen.master_heartbeat import (
+    consumer_heartbeat_entry,
+    split_consumer_heartbeat_entry,
+)
 from app.drivers.canopen.motion import _interpolation_period
 from app.drivers.canopen.pdo import answered_sync, pack_drive_command, unpack_drive_feedback
 from app.drivers.canopen.settings import settings_from_config
@@ -261,6 +265,31 @@ def settings_error(channel, mutate) -> ConfigError:
             "at least 1.5 x heartbeat_ms",
         ),
         (lambda s: s.update(channel=""), "backend.canopen.channel", "channel name"),
+        (
+            lambda s: s.update(master_node_id=10),
+            "backend.canopen.master_node_id",
+            "io.node_id has 10",
+        ),
+        (
+            lambda s: s["axes"]["Y"].update(node_id=127),  # the default master_node_id
+            "backend.canopen.master_node_id",
+            "axes.Y.node_id has 127",
+        ),
+        (
+            lambda s: s.update(master_node_id=0),
+            "backend.canopen.master_node_id",
+            "from 1 to 127 (the controller's own node id)",
+        ),
+        (
+            lambda s: s.update(master_heartbeat_timeout_ms=70),
+            "backend.canopen.master_heartbeat_timeout_ms",
+            "at least 1.5 x heartbeat_ms (75)",
+        ),
+        (
+            lambda s: s.update(master_heartbeat_timeout_ms=65536),
+            "backend.canopen.master_heartbeat_timeout_ms",
+            "from 15 to 65535",
+        ),
         (lambda s: s.update(sync_period_ms=4), "backend.canopen.sync_period_ms", "a known key"),
         (
             lambda s: s["axes"]["Y"].update(node_id=1),
@@ -320,9 +349,26 @@ def test_settings_errors_name_the_key(channel, mutate, key, allowed):
 def test_settings_defaults(config):
     settings = settings_from_config(config)
     assert settings.heartbeat_ms == 50 and settings.slow_feedback_every_n_sync == 5
+    assert settings.master_node_id == 127 and settings.master_heartbeat_timeout_ms == 250
     assert settings.axes["X"].to_counts(1.2345) == 1234
     assert settings.axes["Z"].from_counts(-25_000) == -2.5
     assert settings.io.input_bytes == 2 and settings.io.output_bytes == 1
+
+
+def test_the_drives_wait_2_5_heartbeats_for_the_controller_by_default(channel):
+    data = machine_data(channel, heartbeat_ms=100)
+    del data["backend"]["canopen"]["master_heartbeat_timeout_ms"]
+    assert settings_from_config(parse_config(data)).master_heartbeat_timeout_ms == 250
+
+
+def test_consumer_heartbeat_entry():
+    assert consumer_heartbeat_entry(127, 250) == 0x007F_00FA
+    assert split_consumer_heartbeat_entry(0x0064_012C) == (100, 300)
+    assert split_consumer_heartbeat_entry(0) == (0, 0)
+    with pytest.raises(ValueError, match="producer node id 128"):
+        consumer_heartbeat_entry(128, 250)
+    with pytest.raises(ValueError, match="65536 ms"):
+        consumer_heartbeat_entry(127, 65536)
 
 
 def test_an_inverted_axis_counts_the_other_way(channel):

@@ -24,6 +24,8 @@ def test_configure_maps_pdos_and_sets_heartbeat(backend, bench: Bench):
         node = NODE_IDS[name]
         assert drive.nmt_state == "PRE-OPERATIONAL"
         assert drive.read(obj.PRODUCER_HEARTBEAT_TIME) == 50
+        # watches the controller (node 127) with a 250 ms timeout
+        assert drive.read(obj.CONSUMER_HEARTBEAT_TIME, 1) == 0x007F_00FA
         assert drive.read(obj.RPDO_COMM, 1) == 0x200 + node
         assert drive.read(obj.RPDO_COMM, 2) == 1  # taken at the next SYNC
         assert drive.read(obj.TPDO_COMM, 1) & 0x7FF == 0x180 + node
