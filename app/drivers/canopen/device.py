@@ -24,7 +24,9 @@ the heartbeat, so that a deactivated, disabled drive does not fault for a silenc
 meant to have; a node left watching (unreachable, or not confirmed disabled) faults on its
 own once the heartbeat stops, which is the safe direction. ``activate()`` switches those
 consumers on again. Losing a node does not stop the heartbeat: the drives keep watching the
-controller until deactivation, or until the process ends.
+controller (a quick-stopped drive holds with its power stage on) until deactivation, or
+``shutdown()``, which from ERROR stops the heartbeat without switching any consumer off, or
+until the process ends.
 
 Time: every wait here is on a condition (frames arriving), bounded by a timeout from the
 settings; nothing sleeps.
@@ -204,6 +206,8 @@ class CanopenDevice:
             return
         if self._state is LifecycleState.ACTIVE:
             self.deactivate()
+        if self._acquired:  # from ERROR: the heartbeat may still run, with nodes watching
+            self._end_master_heartbeat(disarm=False)
         self._release()
         self._state = LifecycleState.FINALIZED
 
@@ -254,11 +258,14 @@ class CanopenDevice:
         """Switch the safe nodes' consumers off (``disarm``), then stop the heartbeat."""
         if not self.consumes_master_heartbeat:
             return
-        nodes = self._nodes() if disarm else {}
-        for node_id, label in nodes.items():
-            if not self._disarmable(node_id):
+        running = self._bus.master_heartbeat.running
+        for node_id, label in self._nodes().items():
+            if node_id in self._disarmed or not running:
+                continue
+            if not disarm or not self._disarmable(node_id):
                 log.warning(
-                    "%s keeps watching the controller's heartbeat: it faults once it stops",
+                    "%s still watches the controller's heartbeat, which stops now: "
+                    "it faults (0x8130) if its power stage is on",
                     label,
                 )
                 continue

@@ -226,3 +226,26 @@ def test_a_drive_that_did_not_disable_keeps_watching_after_deactivation(backend,
     assert x.wait(lambda: x.state is S.FAULT, TIMEOUT_S), x.state
     assert x.record.emcy_sent == [EMCY_HEARTBEAT]
     assert bench.drives["Y"].state is S.SWITCH_ON_DISABLED
+
+
+def test_after_a_lost_node_the_heartbeat_goes_on_until_shutdown(backend, bench: Bench):
+    """A lost node latches ERROR and quick-stops the drives, which hold with their power stage
+    on: the heartbeat goes on while the controller lives, so they do not fault for nothing.
+    Shutting the drives down from ERROR stops it, and the drives still holding stop for good."""
+    start(backend)
+    enable_all(backend)
+    bench.drives["Y"].silence_heartbeat()
+    with pytest.raises(CommunicationError, match="heartbeat lost"):
+        run_until(backend, lambda fb: False, max_periods=2000)  # about 200 until the loss
+    bus = backend.extras["canopen"]
+    x = bench.drives["X"]
+    assert x.wait(lambda: x.state is S.QUICK_STOP_ACTIVE, TIMEOUT_S)
+    log = FrameLog(bench.network, 0x77F)
+    assert log.wait_count(0x77F, 8)  # 400 ms later: still sent, X still holding
+    assert x.state is S.QUICK_STOP_ACTIVE and x.consumer.events == 0
+    assert backend.io.lifecycle_state is LifecycleState.ACTIVE  # keeps the bus open
+
+    backend.motion.shutdown()
+    assert not bus.master_heartbeat.running
+    assert x.wait(lambda: x.state is S.FAULT, TIMEOUT_S), x.state
+    assert x.record.emcy_sent == [EMCY_HEARTBEAT]
