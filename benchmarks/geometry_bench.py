@@ -23,23 +23,14 @@ import statistics
 import time
 from collections.abc import Callable
 
+from app.geometry.cli_solve import PROCESS_DEFAULTS
 from app.geometry.compare import edge_deviation, slope_overcut_formula_mm, tangent_point_shift_mm
 from app.geometry.profile import solve_cubic_d, solve_profile
 from app.geometry.ratio import Ratio
 from app.geometry.toolpath import ToolPathParams, build_original_toolpath, build_toolpath
 
-PARAMS = ToolPathParams(
-    tool_radius_mm=40.0,
-    machine_height_mm=250.0,
-    tilt_deg=3.5,
-    start_x_mm=100.0,
-    start_y_mm=400.0,
-    lead_mm=60.0,
-    home_x_mm=0.0,
-    home_y_mm=0.0,
-    home_z_deg=0.0,
-    tilt_clearance_mm=50.0,
-)
+# The typical jointer of `stave solve` (80 mm cutter, pivot 250 mm above the table), 3.5 deg.
+PARAMS = ToolPathParams.from_parameters(PROCESS_DEFAULTS, tilt_deg=3.5)
 
 STAVES = [  # (L, W, lambda, k)
     (1000.0, 150.0, "1/4", "3/4"),  # the spec's worked example

@@ -14,24 +14,14 @@ from fractions import Fraction
 from hypothesis import assume, settings
 from hypothesis import strategies as st
 
+from app.geometry.cli_solve import PROCESS_DEFAULTS
 from app.geometry.profile import StaveProfile, solve_profile
 from app.geometry.toolpath import ToolPathParams
 
 PROPERTY = settings(max_examples=120, deadline=None)
 """Enough examples to sweep the range; keeps tests/geometry well under 30 s."""
 
-DEFAULT_PARAMS = ToolPathParams(
-    tool_radius_mm=40.0,
-    machine_height_mm=250.0,
-    tilt_deg=3.5,
-    start_x_mm=100.0,
-    start_y_mm=400.0,
-    lead_mm=60.0,
-    home_x_mm=0.0,
-    home_y_mm=0.0,
-    home_z_deg=0.0,
-    tilt_clearance_mm=50.0,
-)
+DEFAULT_PARAMS = ToolPathParams.from_parameters(PROCESS_DEFAULTS, tilt_deg=3.5)
 
 
 @dataclass(frozen=True)
