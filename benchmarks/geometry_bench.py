@@ -23,7 +23,7 @@ import statistics
 import time
 from collections.abc import Callable
 
-from app.geometry.cli_solve import PROCESS_DEFAULTS
+from app.cli.solve import PROCESS_DEFAULTS
 from app.geometry.compare import edge_deviation, slope_overcut_formula_mm, tangent_point_shift_mm
 from app.geometry.profile import solve_cubic_d, solve_profile
 from app.geometry.ratio import Ratio

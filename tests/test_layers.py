@@ -19,7 +19,7 @@ FIELDBUS = ("pymodbus", "can", "canopen", "serial")
 # package -> forbidden module prefixes
 RULES: dict[str, tuple[str, ...]] = {
     "geometry": (*QT, *FIELDBUS, "app.machine", "app.drivers", "app.data", "app.screens"),
-    "machine": (*QT, "app.screens"),
+    "machine": (*QT, "app.screens", "app.cli"),
     "drivers": (*QT, "app.screens", "app.machine", "app.data"),
     "data": (*QT, *FIELDBUS, "app.screens", "app.machine", "app.drivers"),
     "screens": (

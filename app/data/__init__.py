@@ -17,5 +17,6 @@ checks that on the source. Modules:
 * ``shifts``       - day and shift windows.
 * ``backup``       - online backup and checked restore.
 * ``paths``        - the default database location.
-* ``cli_db``       - ``stave db``.
+
+``stave db`` (in ``app.cli.db``) is this package's command line.
 """

@@ -3,8 +3,8 @@
 Modules: `ratio` (exact fractions as coopers give them), `errors` (typed field errors),
 `limits` (machine limits and validation), `profile` (the cubic and the side profile),
 `segments` / `polyline` (exact lines and arcs, chord splitting), `toolpath` (machine
-coordinates of both sides), `compare` (edge error of a path, for the benchmark), `cli_solve`
-(the `stave solve` subcommand).
+coordinates of both sides), `compare` (edge error of a path, for the benchmark). Its command
+line, `stave solve`, lives in `app.cli.solve`.
 """
 
 from app.geometry.errors import FieldError, GeometryError

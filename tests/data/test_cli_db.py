@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from app.cli import main as stave_main
-from app.data.cli_db import main
+from app.cli.db import main
 from app.data.database import Database
 from app.data.records import PieceResult, ProductionRecord
 
@@ -198,7 +198,7 @@ def test_the_stave_command_dispatches_to_db(
 
 def test_as_a_separate_process(db_path: Path) -> None:
     done = subprocess.run(
-        [sys.executable, "-m", "app.data.cli_db", "list", "--db", str(db_path)],
+        [sys.executable, "-m", "app.cli.db", "list", "--db", str(db_path)],
         capture_output=True,
         text=True,
         check=False,

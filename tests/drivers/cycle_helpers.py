@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
+from app.cli.simulate import Watch
 from app.data.recipe_files import load_recipe_file
 from app.machine import commands as cmd
-from app.machine.cli_simulate import Watch
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, MachineState
 

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
+from app.cli import probe as cli_probe
 from app.config import parse_config
-from app.drivers import cli_probe
 from app.drivers.contracts import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from tests.drivers.serial_gauge.fake_gauge import FakeGauge

@@ -14,7 +14,7 @@ from fractions import Fraction
 from hypothesis import assume, settings
 from hypothesis import strategies as st
 
-from app.geometry.cli_solve import PROCESS_DEFAULTS
+from app.cli.solve import PROCESS_DEFAULTS
 from app.geometry.profile import StaveProfile, solve_profile
 from app.geometry.toolpath import ToolPathParams
 

@@ -6,8 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from app.config import parse_config
-from app.geometry.cli_solve import (
+from app.cli.solve import (
     DEFAULT_TILT_DEG,
     PROCESS_DEFAULTS,
     build_parser,
@@ -15,6 +14,7 @@ from app.geometry.cli_solve import (
     run,
     settings_from_config,
 )
+from app.config import parse_config
 from app.geometry.limits import StaveLimits
 from app.geometry.profile import solve_profile
 from app.geometry.toolpath import build_toolpath
@@ -215,7 +215,7 @@ def test_bad_config_file_is_one_line(capsys, tmp_path, text, fragment):
 
 
 def run_process(*argv: str) -> subprocess.CompletedProcess[str]:
-    code = "import sys; from app.geometry.cli_solve import main; sys.exit(main(sys.argv[1:]))"
+    code = "import sys; from app.cli.solve import main; sys.exit(main(sys.argv[1:]))"
     return subprocess.run(
         [sys.executable, "-c", code, *argv],
         capture_output=True,
@@ -244,7 +244,7 @@ def test_subprocess_invalid_input_has_no_traceback():
 
 def test_module_entry_point():
     result = subprocess.run(
-        [sys.executable, "-m", "app.geometry.cli_solve", *EXAMPLE_ARGS[:2], "--width", "nan"],
+        [sys.executable, "-m", "app.cli.solve", *EXAMPLE_ARGS[:2], "--width", "nan"],
         capture_output=True,
         text=True,
         cwd=REPO,
@@ -257,7 +257,7 @@ def test_module_entry_point():
 
 def test_a_reader_that_goes_away_is_not_an_error():
     # `stave solve ... | head -3`: the pipe closes before the output is written.
-    code = "import sys; from app.geometry.cli_solve import main; sys.exit(main(sys.argv[1:]))"
+    code = "import sys; from app.cli.solve import main; sys.exit(main(sys.argv[1:]))"
     process = subprocess.Popen(
         [sys.executable, "-c", code, *EXAMPLE_ARGS],
         stdout=subprocess.PIPE,

@@ -13,10 +13,10 @@ from pathlib import Path
 
 import pytest
 
+from app.cli.simulate import Watch
 from app.config import parse_config
 from app.drivers.contracts import Cia402State
 from app.machine import commands as cmd
-from app.machine.cli_simulate import Watch
 from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState
 from tests.drivers.canopen.conftest import (

@@ -7,7 +7,7 @@ import argparse
 import json
 from pathlib import Path
 
-from app.drivers import cli_probe
+from app.cli import probe as cli_probe
 from app.drivers.canopen import objects as obj
 from app.resources import resource_path
 from tests.drivers.canopen.conftest import Bench

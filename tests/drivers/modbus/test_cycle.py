@@ -6,11 +6,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from app.cli.simulate import Watch
 from app.config import parse_config
 from app.drivers.contracts import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from app.machine import commands as cmd
-from app.machine.cli_simulate import Watch
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, MachineState
 from tests.drivers.cycle_helpers import cut_one_board, select_sample_recipe

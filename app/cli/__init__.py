@@ -1,8 +1,10 @@
-"""The ``stave`` command-line tools: one subcommand per job, each in the module that owns it.
+"""The ``stave`` command-line tools: one subcommand per job, one module each in this package.
 
-Why a table of module names: each tool lives beside the code it exercises (``stave solve`` in
-the geometry package, ``stave probe`` in the drivers, ...) and is imported only when run, so
-``stave solve`` on an office PC never loads Qt or a fieldbus stack.
+Why the entry points live here and not beside the code they drive: the geometry, machine,
+drivers and data packages do no console I/O and parse no arguments, so each stays a library
+that the machine process, the screens and these tools share. Why a table of module names: each
+tool is imported only when run, so ``stave solve`` on an office PC never loads Qt or a
+fieldbus stack.
 """
 
 from __future__ import annotations
@@ -16,10 +18,10 @@ from app import __version__
 
 # subcommand -> (module with add_arguments(parser) and run(args) -> int, one-line help)
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
-    "solve": ("app.geometry.cli_solve", "compute a stave's profile and tool path"),
-    "simulate": ("app.machine.cli_simulate", "run automatic cycles on the simulated machine"),
-    "probe": ("app.drivers.cli_probe", "connect to the configured hardware and show its state"),
-    "db": ("app.data.cli_db", "recipes import/export, production export, backup and restore"),
+    "solve": ("app.cli.solve", "compute a stave's profile and tool path"),
+    "simulate": ("app.cli.simulate", "run automatic cycles on the simulated machine"),
+    "probe": ("app.cli.probe", "connect to the configured hardware and show its state"),
+    "db": ("app.cli.db", "recipes import/export, production export, backup and restore"),
 }
 
 
@@ -44,7 +46,3 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     code: int = _module(args._module).run(args)
     return code
-
-
-if __name__ == "__main__":
-    sys.exit(main())

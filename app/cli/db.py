@@ -248,7 +248,7 @@ _ACTIONS = {
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m app.data.cli_db ACTION ...`` (the same as ``stave db ACTION ...``)."""
+    """``python -m app.cli.db ACTION ...`` (the same as ``stave db ACTION ...``)."""
     parser = argparse.ArgumentParser(prog="stave db", description=__doc__.splitlines()[0])
     add_arguments(parser)
     return run(parser.parse_args(argv))

@@ -8,8 +8,8 @@ Human-readable by default; `--json` prints one JSON object (keys A, B, C, D, R, 
 arc_center_a, arc_center_b, toolpath). Invalid input exits with code 2 and one line on
 stderr naming the field(s) and the allowed range(s); never a traceback.
 
-The lead wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it standalone
-(`python -m app.geometry.cli_solve ...`). Numbers are read as text and converted here, so that
+`app.cli` wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it standalone
+(`python -m app.cli.solve ...`). Numbers are read as text and converted here, so that
 a bad number is reported with the field's name and range like every other invalid input.
 
 Process parameters (tool radius, machine height, start position P0, lead, tilt clearance)
