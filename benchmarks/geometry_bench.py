@@ -6,8 +6,9 @@ Prints
 * the time of one profile solve (validation + certified cubic root + points), of the cubic
   alone, of a tool path and of its polyline at 0.001 mm chord error;
 * for a few staves, the edge error of the original program's y-only shift of r/cos(alpha)
-  against the normal offset (overcut normal to the edge, the spec's across-the-stave figure
-  rc*(1/cos(theta) - 1), and how far along X the tangent points move), with ours beside it;
+  against the normal offset (overcut normal to the edge, the across-the-stave figure of
+  docs/MACHINE.md section 3, rc*(1/cos(theta) - 1), and how far along X the tangent points move),
+  with ours beside it;
 * the worst of both over random staves covering the whole valid range.
 
 Machine parameters: tool radius 40 mm, machine height 250 mm, tilt 3.5 deg, P0 (100, 400),
@@ -33,7 +34,7 @@ from app.geometry.toolpath import ToolPathParams, build_original_toolpath, build
 PARAMS = ToolPathParams.from_parameters(PROCESS_DEFAULTS, tilt_deg=3.5)
 
 STAVES = [  # (L, W, lambda, k)
-    (1000.0, 150.0, "1/4", "3/4"),  # the spec's worked example
+    (1000.0, 150.0, "1/4", "3/4"),  # the worked example of docs/MACHINE.md section 2
     (900.0, 120.0, "1/3", "2/3"),
     (1200.0, 200.0, "1/4", "3/5"),
     (950.0, 280.0, "1/5", "3/14"),  # widest board, narrowest head: steepest slope

@@ -1,4 +1,4 @@
-"""How much faster than real time the simulated machine runs (the issue asks for >= 50x).
+"""How much faster than real time the simulated machine runs (the target is >= 50x).
 
 One simulated minute of the three axes in cyclic synchronous position mode at the configured
 4 ms period: every period the setpoints of X, Y and Z are written (cosine sweeps that keep

@@ -100,5 +100,8 @@ def tangent_point_shift_mm(original: ToolPath, ours: ToolPath) -> float:
 
 
 def slope_overcut_formula_mm(profile: StaveProfile, effective_radius_mm: float) -> float:
-    """The spec's error of the y-only shift across the stave: rc * (1/cos(theta) - 1)."""
+    """The error across the stave of the original's y-only shift: rc * (1/cos(theta) - 1).
+
+    docs/MACHINE.md section 3 gives the formula; the benchmark sets it beside the measured error.
+    """
     return effective_radius_mm * (1.0 / math.cos(profile.slope_rad) - 1.0)

@@ -1,4 +1,4 @@
-"""The machine's limits (spec section 1) and the checks against them.
+"""The machine's limits (docs/MACHINE.md section 1) and the checks against them.
 
 Two levels of checks, because the inputs arrive at two different times:
 
@@ -33,7 +33,7 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True)
 class StaveLimits:
-    """Limits of the machine; defaults are the table of spec section 1.
+    """Limits of the machine; defaults are the table of docs/MACHINE.md section 1.
 
     The axis travel (x/y in mm, z in degrees, machine coordinates) is optional: None means
     "not configured, not checked". Setting a barrel diameter bound to None disables it.
@@ -281,8 +281,8 @@ def validate_stave(
 ) -> list[FieldError]:
     """Check one measured board against the limits; returns every violation found.
 
-    Covers the table of spec section 1, the special cases of section 2 (k = 1 nothing to cut,
-    lambda >= 1/2 no arc, head width W1 = k*W >= 60 mm, non-finite numbers) and, when
+    Covers the table of docs/MACHINE.md section 1, the special cases of its section 2 (k = 1 nothing
+    to cut, lambda >= 1/2 no arc, head width W1 = k*W >= 60 mm, non-finite numbers) and, when
     thickness and tilt are given, the barrel diameter and a positive top face at the heads.
     """
     limits = DEFAULT_LIMITS if limits is None else limits

@@ -4,8 +4,8 @@ A chord spanning the angle phi of an arc of radius R deviates from the arc by it
 R * (1 - cos(phi/2)) = 2R * sin^2(phi/4); keeping that below the bound e gives the largest
 step phi = 4 * asin(sqrt(e / (2R))). Written this way it stays accurate for arcs of hundreds of
 metres where 1 - e/R would round away. Lines are exact already and only split when a maximum
-segment length is asked for (some controls, like the polystyrene saw of spec section 6, want
-segments no longer than 1 mm).
+segment length is asked for (some controls, like the polystyrene saw of docs/MACHINE.md
+section 6, want segments no longer than 1 mm).
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The stave side profile: two straight end sections joined by a tangent circular arc.
 
-Spec section 2: with A = lambda*L, B = L/2 - A, C = (W - W1)/2 the rise D of the straight
+docs/MACHINE.md section 2: with A = lambda*L, B = L/2 - A, C = (W - W1)/2 the rise D of the straight
 section is the root in (0, C) of
 
     f(D) = D^3 - 2*C*D^2 + (C^2 - B^2 - 2*A*B)*D + 2*A*B*C
@@ -18,16 +18,16 @@ B with tangent angle theta, so D = A*tan(theta) and C - D = B*tan(theta/2), whic
 h is increasing and convex on (0, 1), h(0) = -C and h(C / (2A + B)) >= 0, so Newton's method
 started at that upper bound converges monotonically (quadratically) without ever leaving the
 bracket; a bisection step guards it anyway. Multiplying h by -(1 - t^2) gives a cubic in t
-equivalent to f, so the root is the spec's D. Finally the root is *certified* in exact rational
-arithmetic: f is evaluated exactly at D -/+ 1e-10 mm and must change sign there, so the error
-in D is provably below 1e-10 mm whatever the floating-point rounding did. Should that ever
+equivalent to f, so the root is the D of relation (3). Finally the root is *certified* in exact
+rational arithmetic: f is evaluated exactly at D -/+ 1e-10 mm and must change sign there, so the
+error in D is provably below 1e-10 mm whatever the floating-point rounding did. Should that ever
 fail, an exact-sign bisection on [0, C] takes over (it cannot fail: f(0) > 0 > f(C)).
 
 The radius comes from relation (1), R = A*B/D + (C - D), which stays accurate both when D is
 tiny (k -> 1) and when D -> C (lambda -> 1/2); relation (2) would lose digits in C - D.
 """
 
-# The spec names the quantities A, B, C, D, R, L, W, W1; the code keeps those names.
+# docs/MACHINE.md names the quantities A, B, C, D, R, L, W, W1; the code keeps those names.
 # ruff: noqa: N803, N806
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits, validate_stave
 
 ROOT_TOLERANCE_MM = 1e-10
-"""Certified bound on |D - exact root| (the issue demands below 1e-9 mm)."""
+"""Certified bound on |D - exact root| (the product promises below 1e-9 mm)."""
 
 _MAX_NEWTON_STEPS = 200
 
@@ -48,7 +48,7 @@ Point = tuple[float, float]
 
 @dataclass(frozen=True)
 class StaveProfile:
-    """The solved side profile in the profile frame of spec section 2 (all mm).
+    """The solved side profile in the profile frame of docs/MACHINE.md section 2 (all mm).
 
     x runs along the stave from its left end (x = 0) to its right end (x = L); y across it,
     0 on the centre line, +y towards side A (cut first). `points` holds P1..P8; the arcs run
@@ -158,8 +158,9 @@ def _solve_half_angle(A: float, B: float, C: float) -> float:
 def solve_cubic_d(A: float, B: float, C: float) -> float:
     """The physical root D in (0, C) of the cubic (3), certified to within 1e-10 mm.
 
-    A >= 0, B > 0, C > 0 (mm). A = 0 (lambda = 0, no straight section) gives D = 0 as the spec
-    says (f(0) = 0 there). Raises ValueError for non-finite or out-of-domain arguments.
+    A >= 0, B > 0, C > 0 (mm). A = 0 (lambda = 0, no straight section) gives D = 0 as
+    docs/MACHINE.md section 2 says (f(0) = 0 there). Raises ValueError for non-finite or
+    out-of-domain arguments.
     """
     for name, value in (("A", A), ("B", B), ("C", C)):
         if not math.isfinite(value):

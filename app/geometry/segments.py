@@ -5,8 +5,8 @@ from its start, its bounding box (arcs included, for the axis travel check) and 
 to a point. The drives take lines and arcs as they are; `polyline.py` splits arcs into chords
 for drives without circular interpolation.
 
-Orientation: "clockwise" is seen from above with +X to the right and +Y up (the usual
-right-handed X-Y plane); in the profile frame of the spec both sides of a stave are cut
+Orientation: "clockwise" is seen from above with +X to the right and +Y up (the usual right-handed
+X-Y plane); in the profile frame of docs/MACHINE.md section 2 both sides of a stave are cut
 clockwise around the board (side A left to right along +y, side B right to left along -y).
 
 Tilt: a cutting segment keeps one tilt (Z stays constant while a side is cut); a non-cutting

@@ -1,9 +1,9 @@
 """The tool path of one stave in machine coordinates, both sides, as exact lines and arcs.
 
-Sign conventions (the spec leaves some of them open; these are the ones the code uses):
+Sign conventions (docs/MACHINE.md leaves some of them open; these are the ones the code uses):
 
-* Profile frame (spec section 2): x along the stave from its left end, y across it, 0 on the
-  centre line, +y towards side A, which is cut first.
+* Profile frame (docs/MACHINE.md section 2): x along the stave from its left end, y across
+  it, 0 on the centre line, +y towards side A, which is cut first.
 * Machine frame: X = P0x + x, Y = P0y + y, the same orientation as the profile frame
   (P0 = the system parameter "start position"). The path's points are the positions the X
   and Y axes take, i.e. of the tilt pivot of the router holder.
@@ -14,7 +14,7 @@ Sign conventions (the spec leaves some of them open; these are the ones the code
   side B) along its normal by rc = r / cos(alpha), the radius in plan view of the tilted
   cutter at the table; lines stay lines, the arc keeps its centre with radius R + rc. Then the
   pivot shift: Y_pivot = Y_offset - Hm * tan(Z), i.e. -Hm*tan(alpha) on side A and
-  +Hm*tan(alpha) on side B. Where the normal is along y this is the spec's
+  +Hm*tan(alpha) on side B. Where the normal is along y this is section 3's
   y_cut = y_pivot + Hm*tan(alpha) - r/cos(alpha) on side A, mirrored on side B.
 * Direction: both sides are cut clockwise around the board seen from above (+X to the right,
   +Y up): side A from the left end to the right end, side B back from right to left. The

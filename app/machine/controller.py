@@ -61,7 +61,7 @@ from app.machine.store import MachineStore, PieceRecord
 
 log = logging.getLogger(__name__)
 
-STOP_LOCKOUT_S = 0.5  # a second Stop within this time is ignored (spec section 6)
+STOP_LOCKOUT_S = 0.5  # a second Stop within this time is ignored (docs/MACHINE.md section 6)
 RESET_TIMEOUT_S = 1.0  # how long a Reset waits for the drives to leave FAULT
 FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
 VIOLATION_ALARMS = {

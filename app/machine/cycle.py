@@ -1,4 +1,4 @@
-"""The automatic cycle (spec section 4, the original Step routine) as a sequence of steps.
+"""The automatic cycle as a sequence of steps (docs/MACHINE.md section 4, the Step routine).
 
 Each period the controller calls :meth:`AutomaticCycle.tick` with what the inputs read; the
 cycle sets the outputs and the axis commands, and either carries on, ends (the piece is done),

@@ -28,7 +28,7 @@ def config_parameters(config: MachineConfig) -> dict[str, float]:
 
 
 def stave_limits(config: MachineConfig) -> StaveLimits:
-    """The spec's stave limits plus this machine's axis travel."""
+    """The stave limits of docs/MACHINE.md section 1 plus this machine's axis travel."""
     x, y, z = config.axes["X"], config.axes["Y"], config.axes["Z"]
     return StaveLimits(
         x_min_mm=x.min_position,

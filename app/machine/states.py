@@ -47,7 +47,7 @@ class MachineState(enum.Enum):
 
 
 class CycleStep(enum.Enum):
-    """Steps of the automatic cycle (spec section 4, the original Step routine)."""
+    """Steps of the automatic cycle (docs/MACHINE.md section 4, the original Step routine)."""
 
     WAIT_FOR_PART = "waiting for a board"
     CENTERING = "centering"

@@ -1,4 +1,4 @@
-"""Main screen (automatic mode, the default after power-on; spec section 5).
+"""Main screen (automatic mode, the default after power-on; docs/MACHINE.md section 5).
 
 Recipe selection (previous/next with its number, or a list), big Start and Stop, Home and
 Reset, the axes in big digits (unhomed positions look different), piece counters, the last

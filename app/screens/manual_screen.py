@@ -1,5 +1,5 @@
 """Manual screen: jog X-Y with a cross and the tilt with two buttons, continuous or by steps,
-jog speed and acceleration, homing, clamps and spindle by hand (spec sections 4 and 5).
+jog speed and acceleration, homing, clamps and spindle by hand (docs/MACHINE.md sections 4 and 5).
 
 Why opening the screen enters manual mode and leaving it leaves: that is how the original
 panel worked, and it means no jog button is ever live on a screen the operator is not looking

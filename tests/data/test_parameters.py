@@ -19,7 +19,7 @@ from app.data.users import Role, User
 
 from .conftest import SimClock
 
-# What the brief and the System / Manual screens need (spec section 5).
+# What the System / Manual screens need (docs/MACHINE.md section 5).
 REQUIRED = {
     "home_x_mm",
     "home_y_mm",

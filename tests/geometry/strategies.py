@@ -1,8 +1,8 @@
 """Shared hypothesis strategies and helpers for the geometry tests.
 
-The strategies cover the whole valid range of spec section 1: L in [900, 3500], lambda in
-[0, 1/2), k with a head width W1 = k*W >= 60 mm on a board of W <= 280 mm. Ratios are drawn
-as fractions with denominators up to 10000, the resolution `Ratio.parse` keeps.
+The strategies cover the whole valid range of docs/MACHINE.md section 1: L in [900, 3500], lambda in
+[0, 1/2), k with a head width W1 = k*W >= 60 mm on a board of W <= 280 mm. Ratios are drawn as
+fractions with denominators up to 10000, the resolution `Ratio.parse` keeps.
 """
 
 from __future__ import annotations

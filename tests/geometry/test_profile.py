@@ -1,4 +1,4 @@
-# The spec names the quantities A, B, C, D; pytest.approx on the right reads naturally.
+# docs/MACHINE.md names the quantities A, B, C, D; pytest.approx on the right reads naturally.
 # ruff: noqa: N803, SIM300
 import math
 from fractions import Fraction
@@ -158,7 +158,7 @@ def test_profile_properties_over_the_whole_range(stave):
     assert_root_within(p.A, p.B, p.C, p.D, 1e-9)
     if p.A > 0:
         assert 0.0 < p.D < p.C
-    # Relations (1) and (2) of the spec give the same radius.
+    # Relations (1) and (2) of docs/MACHINE.md section 2 give the same radius.
     if p.A > 0:
         assert p.R == pytest.approx(p.A * p.B / p.D + p.C - p.D, rel=1e-12)
     u = p.C - p.D

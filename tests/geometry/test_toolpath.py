@@ -88,7 +88,7 @@ def test_worked_example_compensation_against_the_spec_formula():
     rc = 40 / math.cos(math.radians(3.5))
     shift = 250 * math.tan(math.radians(3.5))
     # At the belly the normal is along y: y_pivot = y_edge + r/cos(alpha) - Hm*tan(alpha)
-    # on side A, i.e. the spec's y_cut = y_pivot + Hm*tan(alpha) - r/cos(alpha).
+    # on side A, i.e. docs/MACHINE.md section 3's y_cut = y_pivot + Hm*tan(alpha) - r/cos(alpha).
     arc_a, arc_b = path.segments[3], path.segments[11]
     top_a = arc_a.point_at(arc_a.length_mm / 2)
     assert top_a[0] == pytest.approx(600.0, abs=1e-9)

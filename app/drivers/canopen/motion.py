@@ -3,7 +3,7 @@
 Once per period the machine loop calls ``read_axes`` (the TPDO1 answers to the previous
 SYNC, received by the notifier thread) and then ``write_setpoints``: every drive's RPDO1
 (controlword, target, mode) goes out first and then ONE SYNC, at which all drives take their
-targets together, so X and Y have no skew (the guide: one period of skew is up to 0.4 mm
+targets together, so X and Y have no skew (one period of skew between them is up to 0.4 mm
 across the path at 0.2 m/s and 4 ms).
 
 Safety rules kept here (see cia402.py for the controlword itself):

@@ -3,7 +3,8 @@
 Why a fixed set of items updated with ``setData``: creating and removing plot items at 30 Hz
 leaks and is slow; four items are created once and only their data changes (the outline and
 the path when a new plan arrives, the cutter every frame it moves). PySide6 is pinned below
-6.12 because of a crash in exactly this call pattern (see the guide); a soak test keeps it
+6.12 because 6.12.0 on Python 3.11 crashes in exactly this call pattern (none_dealloc
+after about 1,000 setData calls); a soak test keeps it
 honest. Mouse panning and zooming are off: on a touch panel a stray swipe must not lose the
 view.
 """

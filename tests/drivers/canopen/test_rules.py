@@ -181,8 +181,8 @@ def test_frame_bits():
         frame_bits(9, worst_case=False)
 
 
-def test_bus_load_of_the_guides_minimal_mapping():
-    """The guide's figure: 3 axes, controlword+target / statusword+position, SYNC, 1 Mbit/s:
+def test_bus_load_of_the_minimal_mapping():
+    """The measured figure: 3 axes, controlword+target / statusword+position, SYNC, 1 Mbit/s:
     15-19 % at 4 ms, 62-75 % at 1 ms."""
     frames = [CyclicFrame("SYNC", 0, 1), CyclicFrame("RPDO", 6, 3), CyclicFrame("TPDO", 6, 3)]
     at_4ms = bus_load(frames, 0.004, 1_000_000)

@@ -27,7 +27,7 @@ def test_full_automatic_cycle_on_modbus(tmp_path: Path) -> None:
     # X and Y have incremental encoders: the machine homes the axes through the drives'
     # homing method, over Modbus, before the cycle. The home switches sit inside the soft
     # limits (a drive stops a little past the reference edge; on the soft limit itself the
-    # machine layer refuses to hold the axis there: reported to the lead).
+    # machine layer refuses to hold the axis there).
     table = machine_table(
         tcp_modbus(),
         period_ms=20.0,
