@@ -30,11 +30,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, NoReturn
 
+from app.geometry.bevel import FixedTilt
 from app.geometry.errors import GeometryError
-from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
-from app.geometry.profile import StaveProfile, solve_profile
+from app.geometry.limits import StaveLimits, validate_stave
+from app.geometry.profile import StaveProfile
 from app.geometry.ratio import Ratio
-from app.geometry.toolpath import ArcSegment, ToolPath, ToolPathParams, build_toolpath
+from app.geometry.stave_cut import StaveSpec, cut_stave
+from app.geometry.toolpath import ArcSegment, ToolPath
 
 if TYPE_CHECKING:
     from app.config import MachineConfig
@@ -195,17 +197,18 @@ def _solve(args: argparse.Namespace) -> tuple[StaveProfile, ToolPath, tuple[str,
     length_ratio, lam = _ratio_or_text(args.length_ratio)
     width_ratio, k = _ratio_or_text(args.width_ratio)
 
-    errors = validate_stave(length, width, lam, k, settings.limits, thickness, tilt)
-    if errors:
-        raise GeometryError(errors)
+    # Text that is not a number is reported here, with every other problem of the input;
+    # numbers go on to the one composition of the cut the machine uses.
+    if not all(isinstance(v, float) for v in (length, width, tilt, lam, k)) or not (
+        thickness is None or isinstance(thickness, float)
+    ):
+        raise GeometryError(validate_stave(length, width, lam, k, settings.limits, thickness, tilt))
     assert isinstance(length, float) and isinstance(width, float) and isinstance(tilt, float)
     assert length_ratio is not None and width_ratio is not None
-    profile = solve_profile(length, width, length_ratio.value, width_ratio.value, settings.limits)
-    params = ToolPathParams(tilt_deg=tilt, **process)
-    toolpath = build_toolpath(profile, params)
-    travel_errors = check_toolpath_travel(toolpath, settings.limits)
-    if travel_errors:
-        raise GeometryError(travel_errors)
+    assert thickness is None or isinstance(thickness, float)
+    stave = StaveSpec(length, thickness, length_ratio.value, width_ratio.value, FixedTilt(tilt))
+    cut = cut_stave(stave, width, process, settings.limits)
+    profile, toolpath = cut.profile, cut.toolpath
     return profile, toolpath, (str(length_ratio), str(width_ratio))
 
 

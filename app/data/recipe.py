@@ -6,8 +6,8 @@ decimals derived), and how the bevel is chosen:
 
 * ``TiltMode.FIXED``: every board is bevelled at ``tilt_deg``.
 * ``TiltMode.BARREL``: the bevel is computed for each board from its measured width and the
-  barrel's belly diameter (see :func:`tilt_for_width_deg`), so narrow and wide boards of one
-  barrel all close. ``tilt_deg`` is then the nominal tilt the recipe screen shows (for a typical
+  barrel's belly diameter (``app.geometry.barrel``), so narrow and wide boards of one barrel
+  all close. ``tilt_deg`` is then the nominal tilt the recipe screen shows (for a typical
   board); it is validated like a fixed tilt but the cut uses the computed value.
 
 Validation is the geometry's (``validate_recipe_fields``: length, thickness, ratios, tilt and
@@ -27,9 +27,12 @@ from dataclasses import dataclass
 from enum import Enum
 
 from app.data.errors import RecipeFormatError
-from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.barrel import RoundBarrelTilt, barrel_width_errors
+from app.geometry.bevel import FixedTilt, TiltRule
+from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, validate_recipe_fields
 from app.geometry.ratio import Ratio
+from app.geometry.stave_cut import StaveSpec
 
 NAME_MAX_CHARS = 40
 NOTE_MAX_CHARS = 500
@@ -72,9 +75,24 @@ class Recipe:
         """Every reason this recipe cannot be stored (empty list: valid)."""
         return validate_recipe(self, limits)
 
-    def tilt_for_width_deg(self, width_mm: float, limits: StaveLimits | None = None) -> float:
-        """The bevel for a board of this measured width; see :func:`tilt_for_width_deg`."""
-        return tilt_for_width_deg(self, width_mm, limits)
+    @property
+    def tilt_rule(self) -> TiltRule:
+        """How this recipe bevels a board of a measured width (``app.geometry.barrel`` has the
+        barrel's mathematics)."""
+        if self.tilt_mode is TiltMode.BARREL:
+            return RoundBarrelTilt(self.barrel_diameter_mm)
+        return FixedTilt(self.tilt_deg)
+
+    @property
+    def stave(self) -> StaveSpec:
+        """What the geometry cuts for this recipe (``app.geometry.stave_cut.cut_stave``)."""
+        return StaveSpec(
+            self.length_mm,
+            self.thickness_mm,
+            self.length_ratio.value,
+            self.width_ratio.value,
+            self.tilt_rule,
+        )
 
 
 def _check_name(name: object, errors: list[FieldError]) -> None:
@@ -166,7 +184,7 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
         elif diameter is not None and isinstance(recipe.width_ratio, Ratio):
             k = recipe.width_ratio.value
             if 0 < k <= 1:
-                _check_barrel_widths(diameter, k, limits, errors)
+                errors.extend(barrel_width_errors(diameter, k, limits))
 
     if not isinstance(recipe.note, str):
         errors.append(not_a_text("note", recipe.note, f"at most {NOTE_MAX_CHARS} characters"))
@@ -179,85 +197,6 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
 
 def _ratio_value(ratio: object) -> object:
     return ratio.value if isinstance(ratio, Ratio) else ratio
-
-
-def _check_barrel_widths(
-    diameter_mm: float, k: float, limits: StaveLimits, errors: list[FieldError]
-) -> None:
-    """A computed tilt must be possible for at least one board this recipe accepts.
-
-    Boards range from ``min_head_width / k`` (narrower ones give a head under the minimum) to the
-    maximum width; the computed tilt asin(W / Db) must stay within the tilt limits.
-    """
-    width_low = max(
-        limits.min_head_width_mm / k,
-        diameter_mm * math.sin(math.radians(limits.min_tilt_deg)),
-    )
-    width_high = min(limits.max_width_mm, diameter_mm * math.sin(math.radians(limits.max_tilt_deg)))
-    if width_low <= width_high:
-        return
-    allowed = (
-        f"a belly diameter for which some board of "
-        f"{format_value(round(limits.min_head_width_mm / k, 1))}.."
-        f"{format_value(limits.max_width_mm)} mm gets a tilt of "
-        f"{format_value(limits.min_tilt_deg)}..{format_value(limits.max_tilt_deg)} deg"
-    )
-    message = (
-        f"barrel_diameter_mm = {format_value(diameter_mm)} fits no board of this recipe: "
-        f"allowed {allowed}"
-    )
-    errors.append(FieldError("barrel_diameter_mm", diameter_mm, allowed, message))
-
-
-def tilt_for_width_deg(recipe: Recipe, width_mm: float, limits: StaveLimits | None = None) -> float:
-    """The bevel (deg) at which a board of measured width ``width_mm`` is cut under ``recipe``.
-
-    FIXED mode: the recipe's ``tilt_deg``, whatever the width.
-
-    BARREL mode, derivation: the barrel's cross-section at the belly is a circle of diameter Db
-    and the staves' joints are radial planes (they all meet on the barrel's axis; that is what
-    makes them close). A stave whose face on the table is W wide at the belly is a chord of
-    that circle, subtending the central angle 2*asin(W / Db). Each of its two joints lies in the
-    radial plane through one end of the chord, which is turned by half that angle from the
-    radius through the middle of the stave - and that radius is the normal of the stave's face.
-    So each side is bevelled by
-
-        alpha = asin(W / Db)
-
-    (a barrel of n equal staves has W = Db*sin(180/n), giving alpha = 180/n). The heads need no
-    other angle: with k = W1/W matched to the head diameter, W1/Dhead = W/Db. This is the inverse
-    of the geometry's ``barrel_diameter_mm(W, alpha) = W / sin(alpha)``.
-
-    Raises GeometryError (field ``width_mm`` or ``tilt_deg``) if the width is not a positive
-    finite number, or if the computed tilt falls outside the machine's tilt limits (W > Db at all,
-    or a board too wide for so small a barrel).
-    """
-    limits = DEFAULT_LIMITS if limits is None else limits
-    if recipe.tilt_mode is TiltMode.FIXED:
-        return float(recipe.tilt_deg)
-    diameter = recipe.barrel_diameter_mm
-    if diameter is None or not math.isfinite(diameter) or diameter <= 0:
-        allowed = "a positive barrel diameter (recipe in tilt mode 'barrel')"
-        message = f"barrel_diameter_mm = {format_value(diameter)} cannot give a tilt: {allowed}"
-        raise GeometryError([FieldError("barrel_diameter_mm", diameter, allowed, message)])
-    allowed_width = f"0 < width < barrel_diameter_mm = {format_value(diameter)} mm"
-    if isinstance(width_mm, bool) or not isinstance(width_mm, numbers.Real):
-        raise GeometryError([not_a_number("width_mm", width_mm, allowed_width)])
-    width = float(width_mm)
-    if not math.isfinite(width):
-        raise GeometryError([not_a_number("width_mm", width_mm, allowed_width)])
-    if not 0.0 < width < diameter:
-        raise GeometryError([out_of_range("width_mm", width_mm, allowed_width)])
-    tilt = math.degrees(math.asin(width / diameter))
-    if not limits.min_tilt_deg <= tilt <= limits.max_tilt_deg:
-        low, high = format_value(limits.min_tilt_deg), format_value(limits.max_tilt_deg)
-        allowed = f"{low} <= tilt <= {high} deg"
-        note = (
-            f"computed as asin(width_mm / barrel_diameter_mm) = asin({format_value(width)} / "
-            f"{format_value(diameter)})"
-        )
-        raise GeometryError([out_of_range("tilt_deg", round(tilt, 3), allowed, note)])
-    return tilt
 
 
 # ----------------------------------------------------------------------------- row format

@@ -46,7 +46,7 @@ class GeometryError(ValueError):
         self.errors = collected
         super().__init__("\n".join(error.message for error in collected))
 
-    def __reduce__(self) -> tuple[type[GeometryError], tuple[tuple[FieldError, ...]]]:
+    def __reduce__(self) -> tuple[object, ...]:
         # Exceptions pickle through their args (the joined text); rebuild from the errors
         # instead, so a GeometryError survives crossing a process boundary intact.
         return (GeometryError, (self.errors,))

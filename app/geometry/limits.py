@@ -15,7 +15,7 @@ barrel of belly diameter W / sin(alpha). It is reported on the tilt field, with 
 that would fit this width, because that is what the operator can change.
 
 All checks return *every* violation as a list of `FieldError`; an empty list means valid.
-`check_toolpath_travel` checks a finished tool path against the configured axis travel.
+The axis travel is checked on the finished tool path, in `app.geometry.travel`.
 """
 
 from __future__ import annotations
@@ -23,12 +23,8 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
-
-if TYPE_CHECKING:
-    from app.geometry.toolpath import ToolPath
 
 
 @dataclass(frozen=True)
@@ -320,43 +316,4 @@ def validate_stave(
                 f"before the top face at the {head_width:.1f} mm wide heads"
             )
             errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
-    return errors
-
-
-def check_toolpath_travel(toolpath: ToolPath, limits: StaveLimits) -> list[FieldError]:
-    """Check every point of the path (arcs included, not only their ends) against the travel.
-
-    One error per violated bound, naming the axis, the furthest value reached and the range.
-    """
-    x_low = y_low = z_low = math.inf
-    x_high = y_high = z_high = -math.inf
-    for segment in toolpath.segments:
-        sx_low, sy_low, sx_high, sy_high = segment.bounds()
-        x_low, y_low = min(x_low, sx_low), min(y_low, sy_low)
-        x_high, y_high = max(x_high, sx_high), max(y_high, sy_high)
-        z_low = min(z_low, segment.z_start_deg, segment.z_end_deg)
-        z_high = max(z_high, segment.z_start_deg, segment.z_end_deg)
-    errors: list[FieldError] = []
-    axes = (
-        ("x_mm", "X", "mm", x_low, x_high, limits.x_min_mm, limits.x_max_mm),
-        ("y_mm", "Y", "mm", y_low, y_high, limits.y_min_mm, limits.y_max_mm),
-        ("z_deg", "Z", "deg", z_low, z_high, limits.z_min_deg, limits.z_max_deg),
-    )
-    for field, axis, unit, low, high, travel_min, travel_max in axes:
-        allowed = (
-            f"{'-inf' if travel_min is None else format_value(travel_min)} <= {axis} <= "
-            f"{'inf' if travel_max is None else format_value(travel_max)} {unit}"
-        )
-        if travel_min is not None and low < travel_min:
-            message = (
-                f"{field} = {low:.3f} is out of range: allowed {allowed} "
-                f"(the tool path goes beyond the {axis} axis travel)"
-            )
-            errors.append(FieldError(field, low, allowed, message))
-        if travel_max is not None and high > travel_max:
-            message = (
-                f"{field} = {high:.3f} is out of range: allowed {allowed} "
-                f"(the tool path goes beyond the {axis} axis travel)"
-            )
-            errors.append(FieldError(field, high, allowed, message))
     return errors

@@ -6,8 +6,10 @@ stave; the arcs are sampled at a fixed number of points, plenty for a few hundre
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from app.geometry.profile import StaveProfile
+from app.geometry.toolpath import ToolPath
 
 Point = tuple[float, float]
 ARC_POINTS = 60
@@ -38,3 +40,29 @@ def stave_outline(profile: StaveProfile, origin: Point) -> list[Point]:
     side_a = [p["P1"], *arc_points(profile.arc_center_a, profile.R, p["P2"], p["P3"]), p["P4"]]
     side_b = [p["P5"], *arc_points(profile.arc_center_b, profile.R, p["P6"], p["P7"]), p["P8"]]
     return [(origin[0] + x, origin[1] + y) for x, y in (*side_a, *side_b, p["P1"])]
+
+
+DRAWING_CHORD_MM = 0.2  # plenty for a drawing a few hundred pixels wide
+
+
+@dataclass(frozen=True)
+class StaveDrawing:
+    """What a plan view draws, in machine X/Y: the finished stave's outline and the tool
+    path, with whether the move ending at each tool path point cuts."""
+
+    outline_xy: tuple[Point, ...]
+    toolpath_xy: tuple[Point, ...]
+    cutting_mask: tuple[bool, ...]
+
+
+def stave_drawing(toolpath: ToolPath) -> StaveDrawing:
+    """The drawing of a planned cut; the machine's plan view and the recipe screen's preview
+    both draw from this one function, so they show the same stave."""
+    params = toolpath.params
+    outline = stave_outline(toolpath.profile, (params.start_x_mm, params.start_y_mm))
+    polyline = toolpath.to_polyline(DRAWING_CHORD_MM)
+    return StaveDrawing(
+        outline_xy=tuple(outline),
+        toolpath_xy=tuple((p[0], p[1]) for p in polyline),
+        cutting_mask=tuple(bool(p[3]) for p in polyline),
+    )

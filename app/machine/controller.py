@@ -608,11 +608,7 @@ class MachineController:
             return
         cycle._published = True  # type: ignore[attr-defined]
         self._plan_id += 1
-        self._plans = {
-            self._plan_id: build_preview(
-                self._plan_id, cycle.planned.profile, cycle.planned.toolpath
-            )
-        }
+        self._plans = {self._plan_id: build_preview(self._plan_id, cycle.planned.toolpath)}
 
     def _finish_cycle(self) -> None:
         cycle = self.cycle

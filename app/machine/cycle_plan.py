@@ -1,8 +1,10 @@
-"""From a recipe and a measured width to a planned stave: geometry, tool path, trajectory.
+"""From a recipe and a measured width to a planned stave: the checked cut, then its trajectory.
 
 Why separate from the sequencing: this is pure computation (no devices, no time), shared by
 the automatic cycle, ``stave simulate`` and the benchmarks, and it may run on a worker
-thread of the machine process so that planning never delays a setpoint.
+thread of the machine process so that planning never delays a setpoint. The geometry of the
+cut is ``app.geometry.stave_cut.cut_stave``, the one composition the previews use too; only
+the motion planning is added here.
 """
 
 from __future__ import annotations
@@ -11,10 +13,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from app.data.recipe import Recipe
-from app.geometry.errors import FieldError, GeometryError
-from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
-from app.geometry.profile import StaveProfile, solve_profile
-from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
+from app.geometry.errors import FieldError
+from app.geometry.limits import StaveLimits
+from app.geometry.profile import StaveProfile
+from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, cut_stave
+from app.geometry.toolpath import ToolPath
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.stave_plan import StavePlan, plan_stave
 
@@ -30,16 +33,25 @@ class PlanningError(Exception):
 
 @dataclass(frozen=True)
 class PlannedStave:
-    width_mm: float
-    tilt_deg: float
-    profile: StaveProfile
-    toolpath: ToolPath
+    cut: StaveCut
     plan: StavePlan
 
+    @property
+    def width_mm(self) -> float:
+        return self.cut.width_mm
 
-def recipe_tilt_deg(recipe: Recipe, width_mm: float) -> float:
-    """The bevel for this board: the recipe's fixed tilt, or derived from the barrel."""
-    return recipe.tilt_for_width_deg(width_mm)
+    @property
+    def tilt_deg(self) -> float:
+        """The bevel recorded for the board (both sides alike today)."""
+        return self.cut.tilts.a_deg
+
+    @property
+    def profile(self) -> StaveProfile:
+        return self.cut.profile
+
+    @property
+    def toolpath(self) -> ToolPath:
+        return self.cut.toolpath
 
 
 def plan_board(
@@ -55,36 +67,15 @@ def plan_board(
     Raises PlanningError with alarm E032 (width not allowed), E050 (outside the travel) or
     E051 (the planner failed), never anything else."""
     try:
-        tilt_deg = recipe_tilt_deg(recipe, width_mm)
-    except (ValueError, ArithmeticError) as exc:
-        raise PlanningError("E032", f"width {width_mm:.2f} mm: {exc}") from exc
-    errors = validate_stave(
-        recipe.length_mm,
-        width_mm,
-        recipe.length_ratio.value,
-        recipe.width_ratio.value,
-        stave_limits,
-        thickness_mm=recipe.thickness_mm,
-        tilt_deg=tilt_deg,
-    )
-    if errors:
-        raise PlanningError("E032", "; ".join(e.message for e in errors), tuple(errors))
+        cut = cut_stave(recipe.stave, width_mm, params, stave_limits)
+    except StaveCutRefused as exc:
+        code = "E050" if exc.stage is CutStage.TRAVEL else "E032"
+        message = "; ".join(e.message for e in exc.errors)
+        if exc.stage is CutStage.TILT:
+            message = f"width {width_mm:.2f} mm: {message}"
+        raise PlanningError(code, message, exc.errors) from exc
     try:
-        profile = solve_profile(
-            recipe.length_mm,
-            width_mm,
-            recipe.length_ratio.value,
-            recipe.width_ratio.value,
-            stave_limits,
-        )
-        toolpath = build_toolpath(profile, ToolPathParams.from_parameters(params, tilt_deg))
-    except GeometryError as exc:
-        raise PlanningError("E032", str(exc), exc.errors) from exc
-    travel = check_toolpath_travel(toolpath, stave_limits)
-    if travel:
-        raise PlanningError("E050", "; ".join(e.message for e in travel), tuple(travel))
-    try:
-        plan = plan_stave(toolpath, start_xyz, motion_limits)
+        plan = plan_stave(cut.toolpath, start_xyz, motion_limits)
     except (ValueError, ArithmeticError) as exc:
         raise PlanningError("E051", str(exc)) from exc
-    return PlannedStave(width_mm, tilt_deg, profile, toolpath, plan)
+    return PlannedStave(cut, plan)

@@ -9,26 +9,16 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from app.data.recipe import Recipe
-from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits
-from app.geometry.outline import stave_outline
-from app.geometry.profile import StaveProfile, solve_profile
-from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
+from app.geometry.outline import stave_drawing
+from app.geometry.stave_cut import StaveCutRefused, cut_stave
+from app.geometry.toolpath import ToolPath
 from app.machine.snapshot import PlanPreview
 
-PREVIEW_CHORD_MM = 0.2  # plenty for a drawing a few hundred pixels wide
 
-
-def build_preview(plan_id: int, profile: StaveProfile, toolpath: ToolPath) -> PlanPreview:
-    params = toolpath.params
-    outline = stave_outline(profile, (params.start_x_mm, params.start_y_mm))
-    polyline = toolpath.to_polyline(PREVIEW_CHORD_MM)
-    return PlanPreview(
-        plan_id=plan_id,
-        outline_xy=tuple(outline),
-        toolpath_xy=tuple((p[0], p[1]) for p in polyline),
-        cutting_mask=tuple(bool(p[3]) for p in polyline),
-    )
+def build_preview(plan_id: int, toolpath: ToolPath) -> PlanPreview:
+    drawing = stave_drawing(toolpath)
+    return PlanPreview(plan_id, drawing.outline_xy, drawing.toolpath_xy, drawing.cutting_mask)
 
 
 def nominal_width_mm(recipe: Recipe, limits: StaveLimits, last_width_mm: float | None) -> float:
@@ -47,15 +37,11 @@ def recipe_preview(
     limits: StaveLimits,
     last_width_mm: float | None,
 ) -> PlanPreview | None:
-    """The selected recipe drawn for its nominal width, or None when it cannot be solved
-    for that width (the screens then show no stave until a board is measured)."""
+    """The selected recipe drawn for its nominal width, or None when it cannot be cut at
+    that width (the screens then show no stave until a board is measured)."""
     width_mm = nominal_width_mm(recipe, limits, last_width_mm)
     try:
-        tilt_deg = recipe.tilt_for_width_deg(width_mm, limits)
-        profile = solve_profile(
-            recipe.length_mm, width_mm, recipe.length_ratio.value, recipe.width_ratio.value, limits
-        )
-        toolpath = build_toolpath(profile, ToolPathParams.from_parameters(params, tilt_deg))
-    except (GeometryError, ValueError, ArithmeticError, KeyError):
+        cut = cut_stave(recipe.stave, width_mm, params, limits)
+    except StaveCutRefused:
         return None
-    return build_preview(plan_id, profile, toolpath)
+    return build_preview(plan_id, cut.toolpath)

@@ -2,8 +2,8 @@
 
 Why computed in the GUI (and no Qt here): a preview is geometry only, solved in well under a
 millisecond, and the operator wants it to follow every keypad entry; no motion is planned.
-The numbers are the same functions the machine uses for the real cut (``solve_profile``,
-``build_toolpath``), so the preview cannot disagree with the cut.
+It is the machine's own composition (``cut_stave``: bevel, validation, profile, tool path and
+travel check), so the editor cannot show a stave that the machine then refuses.
 """
 
 from __future__ import annotations
@@ -12,13 +12,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from app.data.recipe import Recipe
-from app.geometry.errors import GeometryError
-from app.geometry.limits import StaveLimits, validate_stave
-from app.geometry.outline import stave_outline
-from app.geometry.profile import solve_profile
-from app.geometry.toolpath import ToolPathParams, build_toolpath
-
-PREVIEW_CHORD_MM = 0.2
+from app.geometry.limits import StaveLimits
+from app.geometry.outline import stave_drawing
+from app.geometry.stave_cut import StaveCutRefused, cut_stave
 
 Point = tuple[float, float]
 
@@ -48,39 +44,20 @@ def preview_recipe(
     """Solve ``recipe`` for a board of ``width_mm``; never raises for bad input (the reasons
     are in ``errors``, one line each, naming the field, the value and what is allowed)."""
     try:
-        tilt = recipe.tilt_for_width_deg(width_mm, limits)
-    except (GeometryError, ValueError, ArithmeticError) as exc:
-        return RecipePreview(width_mm, errors=tuple(str(exc).splitlines()))
-    try:
-        length_ratio = recipe.length_ratio.value
-        width_ratio = recipe.width_ratio.value
-    except (AttributeError, ZeroDivisionError) as exc:
-        return RecipePreview(width_mm, errors=(str(exc),))
-    problems = validate_stave(
-        recipe.length_mm,
-        width_mm,
-        length_ratio,
-        width_ratio,
-        limits,
-        thickness_mm=recipe.thickness_mm,
-        tilt_deg=tilt,
-    )
-    if problems:
-        return RecipePreview(width_mm, tilt_deg=tilt, errors=tuple(p.message for p in problems))
-    try:
-        profile = solve_profile(recipe.length_mm, width_mm, length_ratio, width_ratio, limits)
-        toolpath = build_toolpath(profile, ToolPathParams.from_parameters(params, tilt))
-    except GeometryError as exc:
-        return RecipePreview(width_mm, tilt_deg=tilt, errors=tuple(e.message for e in exc.errors))
-    polyline = toolpath.to_polyline(PREVIEW_CHORD_MM)
-    origin = (params["start_x_mm"], params["start_y_mm"])
+        cut = cut_stave(recipe.stave, width_mm, params, limits)
+    except StaveCutRefused as exc:
+        tilt_deg = None if exc.tilts is None else exc.tilts.a_deg
+        return RecipePreview(
+            width_mm, tilt_deg=tilt_deg, errors=tuple(e.message for e in exc.errors)
+        )
+    drawing = stave_drawing(cut.toolpath)
     return RecipePreview(
         width_mm=width_mm,
-        outline=tuple(stave_outline(profile, origin)),
-        toolpath=tuple((p[0], p[1]) for p in polyline),
-        cutting=tuple(bool(p[3]) for p in polyline),
-        tilt_deg=tilt,
-        head_width_mm=profile.W1,
-        d_mm=profile.D,
-        r_mm=profile.R,
+        outline=drawing.outline_xy,
+        toolpath=drawing.toolpath_xy,
+        cutting=drawing.cutting_mask,
+        tilt_deg=cut.tilts.a_deg,
+        head_width_mm=cut.profile.W1,
+        d_mm=cut.profile.D,
+        r_mm=cut.profile.R,
     )

@@ -19,12 +19,14 @@ from app.data.recipe import (
     TiltMode,
     recipe_from_mapping,
     recipe_to_mapping,
-    tilt_for_width_deg,
 )
 from app.data.recipe_files import load_recipe_file
+from app.geometry.barrel import RoundBarrelTilt, barrel_tilt_deg
+from app.geometry.bevel import FixedTilt
 from app.geometry.errors import GeometryError
-from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, barrel_diameter_mm
+from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
 from app.geometry.ratio import Ratio
+from app.geometry.stave_cut import StaveSpec
 
 
 def make_recipe(**changes: object) -> Recipe:
@@ -41,6 +43,12 @@ def make_recipe(**changes: object) -> Recipe:
         barrel_perimeter_mm=None,
     )
     return replace(base, **changes)  # type: ignore[arg-type]
+
+
+def tilt_for_width(recipe: Recipe, width_mm: float) -> float:
+    tilts = recipe.tilt_rule.tilts_for_width(width_mm, DEFAULT_LIMITS)
+    assert tilts.symmetric
+    return tilts.a_deg
 
 
 def fields(recipe: Recipe, limits: StaveLimits | None = None) -> set[str]:
@@ -117,53 +125,26 @@ def test_a_barrel_too_small_for_any_board_of_the_recipe_is_refused() -> None:
 
 def test_fixed_mode_uses_the_recipe_tilt_for_every_width() -> None:
     recipe = make_recipe(tilt_deg=7.5, barrel_diameter_mm=690.0)
-    assert tilt_for_width_deg(recipe, 90.0) == 7.5
-    assert recipe.tilt_for_width_deg(150.0) == 7.5
+    assert recipe.tilt_rule == FixedTilt(7.5)
+    assert tilt_for_width(recipe, 90.0) == tilt_for_width(recipe, 150.0) == 7.5
 
 
-def test_barrel_mode_tilt_is_half_the_central_angle_of_the_stave() -> None:
+def test_barrel_mode_bevels_each_board_for_the_barrel() -> None:
     recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=690.0)
-    width = 110.0
-    tilt = recipe.tilt_for_width_deg(width)
-    assert tilt == pytest.approx(math.degrees(math.asin(width / 690.0)), abs=1e-12)
-    # The inverse of the geometry's barrel diameter for a width and a bevel.
-    assert barrel_diameter_mm(width, tilt) == pytest.approx(690.0, rel=1e-12)
+    assert recipe.tilt_rule == RoundBarrelTilt(690.0)
+    assert tilt_for_width(recipe, 110.0) == barrel_tilt_deg(110.0, 690.0, DEFAULT_LIMITS)
 
 
-@pytest.mark.parametrize("staves", [24, 30, 32, 60])
-def test_n_equal_staves_close_the_circle(staves: int) -> None:
-    """n staves of chord W = Db*sin(180/n) are bevelled 180/n each: 2n bevels make 360 deg."""
-    diameter = 700.0
-    width = diameter * math.sin(math.pi / staves)
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=diameter)
-    assert 2 * staves * recipe.tilt_for_width_deg(width) == pytest.approx(360.0, abs=1e-9)
-
-
-def test_wider_boards_of_one_barrel_get_a_larger_tilt() -> None:
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=900.0)
-    tilts = [recipe.tilt_for_width_deg(w) for w in (80.0, 120.0, 160.0, 200.0)]
-    assert tilts == sorted(tilts)
-    assert len(set(tilts)) == 4
-
-
-@pytest.mark.parametrize(
-    ("width", "limits", "field"),
-    [
-        (math.nan, DEFAULT_LIMITS, "width_mm"),
-        (math.inf, DEFAULT_LIMITS, "width_mm"),
-        (0.0, DEFAULT_LIMITS, "width_mm"),
-        (700.0, DEFAULT_LIMITS, "width_mm"),  # wider than the barrel
-        (200.0, replace(DEFAULT_LIMITS, max_tilt_deg=10.0), "tilt_deg"),  # asin(200/690)=16.9
-    ],
-)
-def test_computed_tilt_refuses_what_cannot_be_cut(
-    width: float, limits: StaveLimits, field: str
-) -> None:
+def test_the_stave_the_geometry_cuts_carries_the_recipe() -> None:
     recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=690.0)
+    assert recipe.stave == StaveSpec(950.0, 27.0, 0.25, 0.8, RoundBarrelTilt(690.0))
+
+
+def test_a_barrel_recipe_without_its_diameter_names_the_field_for_every_width() -> None:
+    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=None)
     with pytest.raises(GeometryError) as caught:
-        tilt_for_width_deg(recipe, width, limits)
-    assert caught.value.fields == (field,)
-    assert field in str(caught.value)
+        tilt_for_width(recipe, 150.0)
+    assert caught.value.fields == ("barrel_diameter_mm",)
 
 
 # ----------------------------------------------------------------------------- row format
@@ -297,7 +278,7 @@ def test_the_sample_recipes_are_valid_and_inside_the_machine_limits() -> None:
         assert recipe.width_ratio.value * 90.0 >= DEFAULT_LIMITS.min_head_width_mm, recipe.name
         assert recipe.barrel_diameter_mm is not None
         for width in (90.0, 160.0):
-            tilt = recipe.tilt_for_width_deg(width)
+            tilt = tilt_for_width(recipe, width)
             assert DEFAULT_LIMITS.min_tilt_deg < tilt < DEFAULT_LIMITS.max_tilt_deg
     lengths = sorted(recipe.length_mm for recipe in recipes)
     assert lengths[0] < 1000.0 and lengths[-1] >= 3000.0  # barriques to a big foudre
@@ -310,5 +291,5 @@ def test_sample_fixed_tilts_match_their_barrel() -> None:
     wide ones)."""
     for recipe in load_recipe_file(sample_recipes_path()):
         barrel = replace(recipe, tilt_mode=TiltMode.BARREL)
-        low, high = barrel.tilt_for_width_deg(90.0), barrel.tilt_for_width_deg(200.0)
+        low, high = tilt_for_width(barrel, 90.0), tilt_for_width(barrel, 200.0)
         assert low <= recipe.tilt_deg <= high, recipe.name

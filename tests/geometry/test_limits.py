@@ -6,13 +6,9 @@ from app.geometry.errors import FieldError
 from app.geometry.limits import (
     StaveLimits,
     barrel_diameter_mm,
-    check_toolpath_travel,
     validate_recipe_fields,
     validate_stave,
 )
-from app.geometry.profile import solve_profile
-from app.geometry.toolpath import build_toolpath
-from tests.geometry.strategies import DEFAULT_PARAMS
 
 VALID = {"length_mm": 1000.0, "width_mm": 150.0, "length_ratio": 0.25, "width_ratio": 0.75}
 LIMITS = StaveLimits()
@@ -239,51 +235,3 @@ def test_recipe_tilt_that_fits_no_barrel():
     low = math.degrees(math.asin(80.0 / 4500.0))
     assert error.allowed == f"{low:.3f} <= tilt <= 45.000 deg"
     assert validate_recipe_fields(1000.0, 40.0, 0.25, 0.75, low + 0.01, LIMITS) == []
-
-
-def toolpath_extremes():
-    profile = solve_profile(1000.0, 150.0, 0.25, 0.75)
-    path = build_toolpath(profile, DEFAULT_PARAMS)
-    apex_y = max(s.bounds()[3] for s in path.segments)
-    return path, apex_y
-
-
-def test_travel_within_limits():
-    path, apex_y = toolpath_extremes()
-    limits = StaveLimits(
-        x_min_mm=-5.0,
-        x_max_mm=3900.0,
-        y_min_mm=-5.0,
-        y_max_mm=apex_y + 1e-3,
-        z_min_deg=-15.0,
-        z_max_deg=15.0,
-    )
-    assert check_toolpath_travel(path, limits) == []
-    assert check_toolpath_travel(path, StaveLimits()) == []
-
-
-def test_travel_counts_the_bulge_of_arcs():
-    path, apex_y = toolpath_extremes()
-    # The highest Y of the path is the top of side A's arc, not any segment end.
-    assert apex_y > max(max(s.start[1], s.end[1]) for s in path.segments) + 1.0
-    (error,) = check_toolpath_travel(path, StaveLimits(y_max_mm=apex_y - 1e-3))
-    assert error.field == "y_mm"
-    assert error.value == pytest.approx(apex_y)
-    assert error.message.startswith(f"y_mm = {apex_y:.3f} is out of range: allowed -inf <= Y <=")
-
-
-def test_travel_each_axis_bound():
-    path, _ = toolpath_extremes()
-    limits = StaveLimits(
-        x_min_mm=10.0,
-        x_max_mm=1000.0,
-        y_min_mm=10.0,
-        y_max_mm=450.0,
-        z_min_deg=-3.0,
-        z_max_deg=3.0,
-    )
-    errors = check_toolpath_travel(path, limits)
-    assert [e.field for e in errors] == ["x_mm", "x_mm", "y_mm", "y_mm", "z_deg", "z_deg"]
-    assert [e.value for e in errors][:2] == [0.0, 1190.0]
-    assert errors[4].value == -3.5 and errors[5].value == 3.5
-    assert errors[5].allowed == "-3 <= Z <= 3 deg"

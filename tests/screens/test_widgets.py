@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -197,6 +198,15 @@ def test_preview_reports_a_bad_width_instead_of_raising() -> None:
     assert any("width_mm = 300" in e and "280" in e for e in preview.errors)
     narrow = preview_recipe(EXAMPLE, 70.0, DEFAULT_PARAMETERS, DEFAULT_LIMITS)
     assert any("head_width_mm" in e for e in narrow.errors)
+
+
+def test_preview_refuses_a_stave_beyond_the_axis_travel_as_the_machine_does() -> None:
+    """The editor must not draw a stave the machine then refuses with E050."""
+    short_x = replace(DEFAULT_LIMITS, x_max_mm=EXAMPLE.length_mm)
+    preview = preview_recipe(EXAMPLE, 150.0, DEFAULT_PARAMETERS, short_x)
+    assert not preview.ok and preview.outline == ()
+    assert any(e.startswith("x_mm = ") and "X axis travel" in e for e in preview.errors)
+    assert preview.tilt_deg == 7.5
 
 
 def test_theme_has_no_unreplaced_tokens_and_scales() -> None:

@@ -1,0 +1,122 @@
+"""Recipe to tool path composed once: every stage refuses with its own stage and reasons,
+and a board that passes is exactly the profile and tool path of the steps run by hand."""
+
+from __future__ import annotations
+
+import pickle
+from dataclasses import dataclass, replace
+
+import pytest
+
+from app.cli.solve import PROCESS_DEFAULTS
+from app.geometry.barrel import RoundBarrelTilt
+from app.geometry.bevel import FixedTilt, SideTilts
+from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
+from app.geometry.outline import stave_drawing
+from app.geometry.profile import solve_profile
+from app.geometry.stave_cut import CutStage, StaveCutRefused, StaveSpec, cut_stave
+from app.geometry.toolpath import ToolPathParams, build_toolpath
+from app.geometry.travel import check_toolpath_travel
+
+STAVE = StaveSpec(1000.0, 30.0, 0.25, 0.75, FixedTilt(3.5))
+
+
+def refusal(stave: StaveSpec, width_mm: float, **changes: object) -> StaveCutRefused:
+    limits = changes.pop("limits", DEFAULT_LIMITS)
+    assert isinstance(limits, StaveLimits)
+    params = {**PROCESS_DEFAULTS, **changes}
+    with pytest.raises(StaveCutRefused) as caught:
+        cut_stave(stave, width_mm, params, limits)  # type: ignore[arg-type]
+    return caught.value
+
+
+def test_a_good_board_is_the_steps_run_by_hand() -> None:
+    cut = cut_stave(STAVE, 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    profile = solve_profile(1000.0, 150.0, 0.25, 0.75)
+    toolpath = build_toolpath(profile, ToolPathParams.from_parameters(PROCESS_DEFAULTS, 3.5))
+    assert cut.tilts == SideTilts(3.5, 3.5)
+    assert cut.profile == profile
+    assert cut.toolpath == toolpath
+    assert cut.width_mm == 150.0
+
+
+def test_a_barrel_recipe_is_bevelled_for_the_measured_width() -> None:
+    stave = replace(STAVE, tilt=RoundBarrelTilt(1500.0))
+    narrow = cut_stave(stave, 100.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    wide = cut_stave(stave, 200.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    assert narrow.tilts.a_deg < wide.tilts.a_deg
+    assert wide.toolpath.params.tilt_deg == wide.tilts.a_deg
+
+
+def test_a_width_the_barrel_cannot_bevel_stops_at_the_tilt() -> None:
+    exc = refusal(replace(STAVE, tilt=RoundBarrelTilt(690.0)), 700.0)
+    assert exc.stage is CutStage.TILT
+    assert exc.fields == ("width_mm",)
+    assert exc.tilts is None
+
+
+def test_a_board_outside_the_limits_stops_at_the_stave_with_every_reason() -> None:
+    exc = refusal(replace(STAVE, length_ratio=0.6), 300.0)
+    assert exc.stage is CutStage.STAVE
+    assert set(exc.fields) == {"width_mm", "length_ratio"}
+    assert exc.tilts == SideTilts(3.5, 3.5)
+
+
+def test_a_missing_or_bad_parameter_is_named() -> None:
+    exc = refusal(STAVE, 150.0, lead_mm="long")
+    assert exc.stage is CutStage.TOOLPATH
+    assert exc.fields == ("lead_mm",)
+    assert "lead_mm = 'long' is not a number" in str(exc)
+
+
+def test_a_home_over_the_board_stops_at_the_tool_path() -> None:
+    exc = refusal(STAVE, 150.0, home_x_mm=600.0, home_y_mm=400.0)
+    assert exc.stage is CutStage.TOOLPATH
+    assert exc.fields == ("home_position_mm",)
+
+
+def test_a_path_beyond_the_travel_stops_at_the_travel_check() -> None:
+    """What the recipe screen used to miss: a valid stave this machine cannot reach."""
+    path = cut_stave(STAVE, 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS).toolpath
+    limits = replace(DEFAULT_LIMITS, x_max_mm=1000.0)
+    exc = refusal(STAVE, 150.0, limits=limits)
+    assert exc.stage is CutStage.TRAVEL
+    assert exc.errors == tuple(check_toolpath_travel(path, limits))
+
+
+def test_two_different_bevels_are_refused_until_the_tool_path_cuts_them() -> None:
+    @dataclass(frozen=True)
+    class Uneven:
+        def tilts_for_width(self, width_mm: float, limits: StaveLimits) -> SideTilts:
+            return SideTilts(4.0, 3.0)
+
+    exc = refusal(replace(STAVE, tilt=Uneven()), 150.0)
+    assert exc.stage is CutStage.TOOLPATH
+    assert exc.fields == ("tilt_deg",)
+    assert "side B" in str(exc)
+
+
+def test_each_distinct_bevel_is_validated() -> None:
+    @dataclass(frozen=True)
+    class Steep:
+        def tilts_for_width(self, width_mm: float, limits: StaveLimits) -> SideTilts:
+            return SideTilts(3.5, 60.0)
+
+    exc = refusal(replace(STAVE, tilt=Steep()), 150.0)
+    assert exc.stage is CutStage.STAVE
+    assert "tilt_deg" in exc.fields
+
+
+def test_a_refusal_crosses_a_process_boundary_intact() -> None:
+    exc = refusal(STAVE, 150.0, limits=replace(DEFAULT_LIMITS, y_max_mm=100.0))
+    copy = pickle.loads(pickle.dumps(exc))
+    assert (copy.stage, copy.errors, copy.tilts) == (exc.stage, exc.errors, exc.tilts)
+
+
+def test_the_drawing_follows_the_tool_path() -> None:
+    cut = cut_stave(STAVE, 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    drawing = stave_drawing(cut.toolpath)
+    assert drawing.outline_xy[0] == drawing.outline_xy[-1]  # closed
+    assert len(drawing.toolpath_xy) == len(drawing.cutting_mask)
+    assert any(drawing.cutting_mask) and not all(drawing.cutting_mask)
+    assert drawing.toolpath_xy[0] == (PROCESS_DEFAULTS["home_x_mm"], PROCESS_DEFAULTS["home_y_mm"])
