@@ -30,6 +30,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
+from app.drivers.cia402 import Cia402State, decode_statusword
+
 AXIS_NAMES: tuple[str, ...] = ("X", "Y", "Z")
 
 
@@ -59,57 +61,6 @@ class LifecycleState(enum.Enum):
     ACTIVE = "active"
     FINALIZED = "finalized"
     ERROR = "error"
-
-
-class Cia402State(enum.Enum):
-    """CiA 402 power state machine, decoded from the statusword (same on every backend)."""
-
-    NOT_READY_TO_SWITCH_ON = "not ready to switch on"
-    SWITCH_ON_DISABLED = "switch on disabled"
-    READY_TO_SWITCH_ON = "ready to switch on"
-    SWITCHED_ON = "switched on"
-    OPERATION_ENABLED = "operation enabled"
-    QUICK_STOP_ACTIVE = "quick stop active"
-    FAULT_REACTION_ACTIVE = "fault reaction active"
-    FAULT = "fault"
-
-
-# (mask, value, state) from CiA 402 / IEC 61800-7-201, checked in order.
-_STATUSWORD_TABLE: tuple[tuple[int, int, Cia402State], ...] = (
-    (0x4F, 0x00, Cia402State.NOT_READY_TO_SWITCH_ON),
-    (0x4F, 0x40, Cia402State.SWITCH_ON_DISABLED),
-    (0x6F, 0x21, Cia402State.READY_TO_SWITCH_ON),
-    (0x6F, 0x23, Cia402State.SWITCHED_ON),
-    (0x6F, 0x27, Cia402State.OPERATION_ENABLED),
-    (0x6F, 0x07, Cia402State.QUICK_STOP_ACTIVE),
-    (0x4F, 0x0F, Cia402State.FAULT_REACTION_ACTIVE),
-    (0x4F, 0x08, Cia402State.FAULT),
-)
-
-# Statusword bits used beyond the power state.
-SW_WARNING = 1 << 7
-SW_REMOTE = 1 << 9
-SW_TARGET_REACHED = 1 << 10
-SW_INTERNAL_LIMIT = 1 << 11
-SW_HOMING_ATTAINED = 1 << 12  # in homing mode: homing attained
-SW_FOLLOWING_ERROR = 1 << 13  # in position modes: following error
-
-# Controlwords (CiA 402 device control commands).
-CW_SHUTDOWN = 0x06
-CW_SWITCH_ON = 0x07
-CW_ENABLE_OPERATION = 0x0F
-CW_DISABLE_VOLTAGE = 0x00
-CW_QUICK_STOP = 0x02
-CW_FAULT_RESET = 0x80
-
-
-def decode_statusword(statusword: int) -> Cia402State:
-    """Return the power state a statusword encodes; unknown patterns are reported as
-    NOT_READY_TO_SWITCH_ON, the only state in which a drive accepts no command."""
-    for mask, value, state in _STATUSWORD_TABLE:
-        if statusword & mask == value:
-            return state
-    return Cia402State.NOT_READY_TO_SWITCH_ON
 
 
 @dataclass(frozen=True)

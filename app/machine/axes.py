@@ -13,7 +13,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from app.config import AxisConfig
-from app.drivers.contracts import AxisFeedback, Cia402State, MotionBackend
+from app.drivers.cia402 import Cia402State
+from app.drivers.contracts import AxisFeedback, MotionBackend
 
 
 @dataclass

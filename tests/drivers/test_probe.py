@@ -14,7 +14,7 @@ import pytest
 
 from app.cli import probe as cli_probe
 from app.config import parse_config
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from tests.drivers.serial_gauge.fake_gauge import FakeGauge
 from tests.drivers.thread_guard import no_thread_left_behind  # noqa: F401 (autouse fixture)

@@ -33,7 +33,6 @@ from dataclasses import dataclass
 from app.config import AxisConfig, MachineConfig
 from app.drivers.canopen import objects as obj
 from app.drivers.canopen.bus import CanopenBus
-from app.drivers.canopen.cia402 import FAULT_STATES, AxisCommander, CommandRefusedError, HomingPhase
 from app.drivers.canopen.device import CanopenDevice
 from app.drivers.canopen.pdo import (
     DRIVE_RPDO1,
@@ -47,14 +46,16 @@ from app.drivers.canopen.pdo import (
     unpack_drive_slow,
 )
 from app.drivers.canopen.settings import AxisNodeSettings, CanopenSettings
-from app.drivers.contracts import (
-    AxisFeedback,
+from app.drivers.cia402 import (
+    FAULT_STATES,
+    Cia402Master,
     Cia402State,
-    CommunicationError,
-    DriverError,
-    MotionBackend,
+    DriveCommand,
+    OperationMode,
+    RequestRefusedError,
     decode_statusword,
 )
+from app.drivers.contracts import AxisFeedback, CommunicationError, DriverError, MotionBackend
 
 log = logging.getLogger(__name__)
 
@@ -79,7 +80,7 @@ class _Axis:
         self.node = node
         self.config = config
         self.label = f"{config.name} (node {node.node_id})"
-        self.commander = AxisCommander()
+        self.commander = Cia402Master(reports_mode=True)
         self.sample: _Sample | None = None
         self.previous: _Sample | None = None
         self.digital_inputs = 0
@@ -116,13 +117,8 @@ class _Axis:
 
     @property
     def follows_setpoints(self) -> bool:
-        """The drive takes our targets: enabled, in CSP, not homing."""
-        c = self.commander
-        return (
-            c.state is Cia402State.OPERATION_ENABLED
-            and c.homing is HomingPhase.IDLE
-            and c.mode_display == obj.MODE_CSP
-        )
+        """The drive takes our targets (the master's rule)."""
+        return self.commander.follows_setpoints
 
 
 POWERED_STATES = (
@@ -252,7 +248,12 @@ class CanopenMotion(CanopenDevice, MotionBackend):
             struct.pack("<i", axis.node.to_counts(cfg.home_switch_position)),
             "home offset",
         )
-        write(obj.MODES_OF_OPERATION, 0, struct.pack("<b", obj.MODE_CSP), "modes of operation")
+        write(
+            obj.MODES_OF_OPERATION,
+            0,
+            struct.pack("<b", OperationMode.CYCLIC_SYNC_POSITION),
+            "modes of operation",
+        )
 
     def _supported_modes(self, node_id: int) -> int | None:
         try:
@@ -275,14 +276,14 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         for name, axis in self._axes.items():
             if self._bus.take_booted(axis.node.node_id):
                 self._homed[name] = False  # the drive rebooted: its position is gone
-            axis.commander = AxisCommander(homed=self._homed[name])
+            axis.commander = Cia402Master(reports_mode=True, homed=self._homed[name])
             axis.targets.clear()
         self._sync_and_wait("no TPDO1 answer to SYNC at activation")
         for axis in self._axes.values():  # command = measured, power request DISABLED
             axis.target_counts = axis.actual_counts
             assert axis.sample is not None
             axis.commander.observe(axis.sample.statusword, axis.sample.mode_display)
-            self._send_rpdo(axis, *axis.commander.command(), axis.target_counts)
+            self._send_rpdo(axis, axis.commander.command(), axis.target_counts)
         self._sync_and_wait("no TPDO1 answer to SYNC at activation")  # taken at this SYNC
         self._sync_and_wait("no TPDO1 answer to SYNC at activation")  # and answered here
 
@@ -298,8 +299,7 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         # sent to every drive, lost or not: a CAN frame costs nothing if nobody hears it
         for axis in self._axes.values():
             axis.commander.disable()
-            controlword, mode = axis.commander.command()
-            self._send_rpdo(axis, controlword, mode, axis.actual_counts)
+            self._send_rpdo(axis, axis.commander.command(), axis.actual_counts)
         reachable = [a for a in self._axes.values() if not self._bus.lost_reason(a.node.node_id)]
         # the TPDO answering a SYNC is sampled before that SYNC's controlword is taken, so
         # the drives' confirmation is in the answers to the following SYNC
@@ -341,14 +341,13 @@ class CanopenMotion(CanopenDevice, MotionBackend):
                 self._homed[name] = False
         for axis in self._axes.values():
             axis.commander.quick_stop()
-            controlword, mode = axis.commander.command()
-            self._send_rpdo(axis, controlword, mode, axis.actual_counts)
+            self._send_rpdo(axis, axis.commander.command(), axis.actual_counts)
         self._bus.sync()
 
-    def _send_rpdo(self, axis: _Axis, controlword: int, mode: int, target_counts: int) -> None:
+    def _send_rpdo(self, axis: _Axis, command: DriveCommand, target_counts: int) -> None:
         self._bus.send(
             DRIVE_RPDO1.cob_id(axis.node.node_id),
-            pack_drive_command(controlword, target_counts, mode),
+            pack_drive_command(command.controlword, target_counts, int(command.mode)),
         )
 
     # ---- the period ----
@@ -413,25 +412,23 @@ class CanopenMotion(CanopenDevice, MotionBackend):
             self._bus.check()
         except CommunicationError as exc:
             raise self._lose(exc.device, str(exc)) from exc
-        targets: dict[str, int] = {}
+        frames: list[tuple[_Axis, DriveCommand, int]] = []
         for name, axis in self._axes.items():
-            if axis.follows_setpoints and name in positions:
-                targets[name] = self._checked_target(axis, positions[name])
-            elif axis.follows_setpoints:
-                targets[name] = axis.target_counts
+            command = axis.commander.command()
+            if command.follows_setpoints and name in positions:
+                target = self._checked_target(axis, positions[name])
+            elif command.follows_setpoints:
+                target = axis.target_counts
             else:
-                targets[name] = axis.actual_counts  # not following: hold where it is
-        frames = []
-        for name, axis in self._axes.items():
-            controlword, mode = axis.commander.command()
-            frames.append((axis, controlword, mode, targets[name]))
+                target = axis.actual_counts  # not following: hold where it is
+            frames.append((axis, command, target))
         try:
-            for axis, controlword, mode, target in frames:
-                self._send_rpdo(axis, controlword, mode, target)
+            for axis, command, target in frames:
+                self._send_rpdo(axis, command, target)
             seq = self._bus.sync()
         except CommunicationError as exc:
             raise self._lose(exc.device, str(exc)) from exc
-        for axis, _controlword, _mode, target in frames:
+        for axis, _command, target in frames:
             axis.target_counts = target
             axis.targets[seq] = target
             axis.targets.pop(seq - 8, None)
@@ -466,7 +463,7 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         self._ensure_active()
         try:
             getattr(axis.commander, what)()
-        except CommandRefusedError as exc:
+        except RequestRefusedError as exc:
             raise DriverError(axis.label, f"{what.replace('_', ' ')} refused: {exc}") from exc
 
     def enable(self, axis: str) -> None:

@@ -53,8 +53,6 @@ INTERPOLATION_TIME_PERIOD = 0x60C2  # 1 value, 2 index: period = value * 10^inde
 DIGITAL_INPUTS = 0x60FD  # digital inputs: bit 0 neg. limit, 1 pos. limit, 2 home switch
 SUPPORTED_DRIVE_MODES = 0x6502  # supported drive modes (bit 5 homing, bit 7 CSP)
 
-MODE_HOMING = 6
-MODE_CSP = 8  # cyclic synchronous position
 SUPPORTED_HOMING_BIT = 1 << 5
 SUPPORTED_CSP_BIT = 1 << 7
 
@@ -62,8 +60,6 @@ DI_NEGATIVE_LIMIT = 1 << 0
 DI_POSITIVE_LIMIT = 1 << 1
 DI_HOME_SWITCH = 1 << 2
 
-CW_HOMING_START = 1 << 4  # controlword bit 4 in homing mode: start homing
-SW_HOMING_ERROR = 1 << 13  # statusword bit 13 in homing mode: homing error
 
 # ---- CiA 401 generic I/O profile ------------------------------------------------------------
 READ_INPUT_8BIT = 0x6000  # digital inputs, 8 per sub-index

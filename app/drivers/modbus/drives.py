@@ -20,9 +20,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from app.config import AxisConfig
+from app.drivers.cia402 import FAULT_STATES, Cia402Master, RequestRefusedError
 from app.drivers.contracts import (
     AxisFeedback,
-    Cia402State,
     DeviceEvent,
     DeviceEventKind,
     DriverError,
@@ -31,7 +31,6 @@ from app.drivers.contracts import (
     MotionBackend,
 )
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
-from app.drivers.modbus.cia402 import Cia402Commander
 from app.drivers.modbus.codec import EncodeError, encode, field_value, put_field
 from app.drivers.modbus.device import BusDevice
 from app.drivers.modbus.link import ModbusLink
@@ -48,13 +47,10 @@ class _Axis:
         self.settings = settings
         self.config = config
         self.address = DeviceAddress(settings.axis, settings.endpoint, settings.device_id)
-        self.commander = Cia402Commander(
-            settings.map.position_mode_value, settings.map.homing_mode_value
-        )
+        self.commander = Cia402Master(reports_mode=False, homed=config.absolute_encoder)
         self.feedback: AxisFeedback | None = None
         self.actual_counts = 0.0
         self.target_counts = 0.0
-        self.homed = config.absolute_encoder
         self.fault_code = 0
 
     def decode(self, block: list[int]) -> AxisFeedback:
@@ -70,10 +66,7 @@ class _Axis:
             else 0.0
         )
         inputs = int(field_value(block, start, m.inputs, order)) if m.inputs else 0
-        state_faulted = self.commander.state in (
-            Cia402State.FAULT,
-            Cia402State.FAULT_REACTION_ACTIVE,
-        )
+        state_faulted = self.commander.state in FAULT_STATES
         if m.fault_code is not None:
             fault_code = int(field_value(block, start, m.fault_code, order))
         else:
@@ -81,10 +74,7 @@ class _Axis:
         self.fault_code = fault_code
         position = counts / self.settings.counts_per_unit
         following = 0.0
-        if (
-            self.commander.state is Cia402State.OPERATION_ENABLED
-            and not self.commander.homing_active
-        ):
+        if self.commander.follows_setpoints:
             following = (self.target_counts - counts) / self.settings.counts_per_unit
         return AxisFeedback(
             name=self.settings.axis,
@@ -93,7 +83,7 @@ class _Axis:
             velocity=velocity,
             following_error=following,
             fault_code=fault_code,
-            homed=self.homed,
+            homed=self.commander.homed,
             homing_active=self.commander.homing_active,
             home_switch=bool(m.inputs and inputs >> m.home_switch_bit & 1),
             limit_positive=bool(m.inputs and inputs >> m.limit_positive_bit & 1),
@@ -187,8 +177,6 @@ class ModbusMotion(BusDevice, MotionBackend):
             return axis.feedback
         previous = axis.commander.state
         outcome = axis.commander.observe(int(block[m.statusword.address - start]))
-        if outcome is not None and outcome.ok:
-            axis.homed = True
         feedback = axis.decode(block)
         if outcome is not None and not outcome.ok:
             self._events.append(
@@ -199,10 +187,7 @@ class ModbusMotion(BusDevice, MotionBackend):
                     f"homing failed: {outcome.reason}",
                 )
             )
-        if feedback.faulted and previous not in (
-            Cia402State.FAULT,
-            Cia402State.FAULT_REACTION_ACTIVE,
-        ):
+        if feedback.faulted and previous not in FAULT_STATES:
             self._events.append(
                 DeviceEvent(
                     DeviceEventKind.EMERGENCY,
@@ -236,7 +221,7 @@ class ModbusMotion(BusDevice, MotionBackend):
         for name, axis in self._axes.items():
             m = axis.settings.map
             command = axis.commander.command()
-            if command.track_actual:
+            if not command.follows_setpoints:
                 axis.target_counts = axis.actual_counts
             elif name in positions:
                 axis.target_counts = positions[name] * axis.settings.counts_per_unit
@@ -245,7 +230,7 @@ class ModbusMotion(BusDevice, MotionBackend):
             try:
                 put_field(block, start, m.controlword, command.controlword, m.word_order)
                 if m.mode is not None:
-                    put_field(block, start, m.mode, command.mode, m.word_order)
+                    put_field(block, start, m.mode, m.mode_value(command.mode), m.word_order)
                 put_field(block, start, m.target, axis.target_counts, m.word_order)
             except EncodeError as exc:
                 raise DriverError(name, f"target {positions.get(name)!r}: {exc}") from None
@@ -266,7 +251,10 @@ class ModbusMotion(BusDevice, MotionBackend):
     # -- power-state requests -------------------------------------------------------------------
     def enable(self, axis: str) -> None:
         self._check(LifecycleState.ACTIVE)
-        self._axis(axis).commander.enable()
+        try:
+            self._axis(axis).commander.enable()
+        except RequestRefusedError as exc:
+            raise DriverError(axis, f"enable refused: {exc}") from None
 
     def disable(self, axis: str) -> None:
         self._check(LifecycleState.ACTIVE)
@@ -291,6 +279,5 @@ class ModbusMotion(BusDevice, MotionBackend):
             )
         try:
             target.commander.start_homing()
-        except ValueError as exc:
-            raise DriverError(axis, str(exc)) from None
-        target.homed = False  # until the drive reports homing attained
+        except RequestRefusedError as exc:
+            raise DriverError(axis, f"start homing refused: {exc}") from None

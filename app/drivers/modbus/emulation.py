@@ -29,7 +29,6 @@ from app.drivers.modbus.settings import (
     RegisterTable,
     parse_modbus_settings,
 )
-from app.drivers.sim.cia402 import OperationMode
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.world import SimWorld
 
@@ -96,11 +95,9 @@ class DriveRegisters:
             )
 
         mode = get(m.mode)
-        if mode is not None:
-            if int(mode) == m.position_mode_value:
-                self.drive.set_mode(OperationMode.CYCLIC_SYNC_POSITION)
-            elif int(mode) == m.homing_mode_value:
-                self.drive.set_mode(OperationMode.HOMING)
+        selected = None if mode is None else m.mode_of(int(mode))
+        if selected is not None:
+            self.drive.set_mode(selected)
         controlword = get(m.controlword)
         if controlword is not None:
             self.drive.write_controlword(int(controlword))

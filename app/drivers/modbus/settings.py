@@ -25,6 +25,7 @@ from itertools import pairwise
 from typing import Any
 
 from app.config import ConfigError, MachineConfig, Section
+from app.drivers.cia402 import OperationMode
 from app.drivers.contracts import InputImage, OutputImage
 
 MAX_READ_REGISTERS = 125  # Modbus limit of one read holding/input registers request
@@ -142,6 +143,20 @@ class DriveMap:
     word_order: WordOrder
     position_mode_value: int  # 8: cyclic synchronous position
     homing_mode_value: int  # 6: homing
+
+    def mode_value(self, mode: OperationMode) -> int:
+        """The register value this drive uses for ``mode`` (vendors may number them apart)."""
+        if mode is OperationMode.HOMING:
+            return self.homing_mode_value
+        return self.position_mode_value
+
+    def mode_of(self, value: int) -> OperationMode | None:
+        """The mode a register value selects; None for a value this map does not use."""
+        if value == self.position_mode_value:
+            return OperationMode.CYCLIC_SYNC_POSITION
+        if value == self.homing_mode_value:
+            return OperationMode.HOMING
+        return None
 
     def read_fields(self) -> list[Field]:
         return [

@@ -9,14 +9,13 @@ the machine layer meets the same behaviour here as on Modbus or CANopen:
   (the link is down) leaves the device in ERROR and raises CommunicationError. Reading is
   allowed when INACTIVE or ACTIVE; every command and write only when ACTIVE, otherwise
   :class:`LifecycleError`. On activation the command positions are set to the measured ones.
-- Power requests are non-blocking, as on the real bus: the master walks the drive one
-  controlword per SYNC (enable: 0x06, 0x07, 0x0F; fault reset: 0x00 then 0x80; homing: mode
-  6, then bit 4), and gives up if the drive refuses a step (STO). Nothing is re-sent on its
-  own: after an E-stop or a fault the machine layer must ask again.
+- Power requests go to the shared CiA 402 master (:mod:`app.drivers.cia402`), one per
+  drive, exactly as on Modbus and CANopen; at every SYNC the master reads the drive's
+  statusword and mode display and sends its controlword, mode and target. Nothing is re-sent
+  or re-enabled on its own: after an E-stop or a fault the machine layer must ask again.
 - Targets written by :meth:`SimMotion.write_setpoints` go out at the next SYNC, all axes
-  together. While an axis homes its targets are ignored (the drive is in homing mode); the
-  first write after homing switches it back to cyclic synchronous position mode, so the
-  machine layer should command the axis where it is.
+  together; while a drive does not follow setpoints (not enabled, homing) the master
+  commands it to its own position.
 - With the link down every call on the adapter raises CommunicationError (a missing reply)
   and ``events()`` reports COMMUNICATION_LOST (and later COMMUNICATION_RESTORED); drive EMCY
   messages arrive as EMERGENCY events with their code.
@@ -28,24 +27,22 @@ advances the world, so it advances exactly once per period. ``extras["world"]`` 
 
 from __future__ import annotations
 
-import enum
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
+from dataclasses import replace
 
 from app.config import MachineConfig
+from app.drivers.cia402 import (
+    Cia402Master,
+    RequestRefusedError,
+)
 from app.drivers.contracts import (
-    CW_DISABLE_VOLTAGE,
-    CW_ENABLE_OPERATION,
-    CW_FAULT_RESET,
-    CW_QUICK_STOP,
-    CW_SHUTDOWN,
-    CW_SWITCH_ON,
     AxisFeedback,
-    Cia402State,
     CommunicationError,
     DeviceEvent,
     DeviceEventKind,
     DigitalIO,
+    DriverError,
     InputImage,
     LifecycleError,
     LifecycleState,
@@ -53,117 +50,43 @@ from app.drivers.contracts import (
     MotionBackend,
     OutputImage,
 )
-from app.drivers.sim.cia402 import CW_BIT_HOMING_START, OperationMode
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.world import SimWorld
 
 L = LifecycleState
-S = Cia402State
 
 
-class _Request(enum.Enum):
-    ENABLE = "enable"
-    DISABLE = "disable"
-    QUICK_STOP = "quick stop"
-    FAULT_RESET = "fault reset"
-    HOMING = "start homing"
+class _DriveLink:
+    """One simulated drive on the simulated bus: the shared master's side of it and the
+    target the machine last wrote. At every SYNC the drive's statusword and mode display go
+    to the master, and the master's controlword, mode and target go to the drive, as a
+    cyclic PDO pair does on CANopen."""
 
-
-_ENABLE_STEP: dict[Cia402State, int] = {
-    S.SWITCH_ON_DISABLED: CW_SHUTDOWN,
-    S.READY_TO_SWITCH_ON: CW_SWITCH_ON,
-    S.SWITCHED_ON: CW_ENABLE_OPERATION,
-    S.QUICK_STOP_ACTIVE: CW_ENABLE_OPERATION,
-}
-
-
-class _AxisMaster:
-    """The master's side of one drive: the cyclic controlword and target, and the walk
-    through the power states that a request needs, one controlword per SYNC."""
-
-    def __init__(self, drive: SimDrive) -> None:
+    def __init__(self, drive: SimDrive, homed: bool) -> None:
         self.drive = drive
-        self.controlword = CW_DISABLE_VOLTAGE
+        self.master = Cia402Master(reports_mode=True, homed=homed)
+        self.master.observe(drive.statusword, int(drive.mode))
         self.target = drive.position
-        self.new_target = False
-        self.request: _Request | None = None
-        self._step = 0
-        self._state_at_last_step: Cia402State | None = None
 
-    def ask(self, request: _Request) -> None:
-        self.request = request
-        self._step = 0
-        self._state_at_last_step = None
-
-    def _done(self) -> None:
-        self.request = None
-
-    def _walk(self) -> None:
+    def feedback(self) -> AxisFeedback:
+        """The drive's registers as a read returns them; the master observes every read
+        (as on Modbus), with what it knows of homing in place of the drive's own flags."""
         drive = self.drive
-        state = drive.state
-        request = self.request
-        if request is _Request.ENABLE:
-            if state is S.OPERATION_ENABLED:
-                self._done()
-                return
-            if (
-                state is S.FAULT
-                or state is S.FAULT_REACTION_ACTIVE
-                or state is self._state_at_last_step
-            ):
-                # The drive refused the last step (safe torque off, a fault): give up, and
-                # leave nothing behind that could power it later on its own.
-                self.controlword = CW_DISABLE_VOLTAGE
-                self._done()
-                return
-            controlword = _ENABLE_STEP.get(state)
-            if controlword is None:
-                return  # not ready yet: wait
-            if controlword == CW_ENABLE_OPERATION:
-                self.target = drive.position  # the drive holds where it is
-                self.new_target = False
-            self.controlword = controlword
-            self._state_at_last_step = state
-        elif request is _Request.DISABLE:
-            self.controlword = CW_DISABLE_VOLTAGE
-            self._done()
-        elif request is _Request.QUICK_STOP:
-            self.controlword = CW_QUICK_STOP
-            self._done()
-        elif request is _Request.FAULT_RESET:
-            self.controlword = (CW_DISABLE_VOLTAGE, CW_FAULT_RESET, CW_DISABLE_VOLTAGE)[self._step]
-            self._step += 1
-            if self._step == 3:
-                self._done()
-        elif request is _Request.HOMING:
-            if self._step == 0:
-                drive.set_mode(OperationMode.HOMING)
-                self.controlword &= ~CW_BIT_HOMING_START
-                self._step = 1
-            else:
-                self.controlword |= CW_BIT_HOMING_START
-                self._done()
+        master = self.master
+        master.observe(drive.statusword, int(drive.mode))
+        return replace(drive.feedback(), homed=master.homed, homing_active=master.homing_active)
 
     def sync(self) -> None:
-        """One SYNC: walk a pending request, send the controlword, then mode and target.
-
-        A target written after a homing run has ended switches the drive back to cyclic
-        synchronous position mode; while a homing request is still being walked, or the
-        drive homes, targets are sent but the drive (in homing mode) ignores them."""
+        """The drive answers the SYNC with its statusword (as a TPDO sampled at SYNC), then
+        takes this SYNC's command: mode, controlword, then target."""
         drive = self.drive
-        if self.request is not None:
-            self._walk()
-        drive.write_controlword(self.controlword)
-        if self.new_target:
-            self.new_target = False
-            if (
-                drive.mode is OperationMode.HOMING
-                and not drive.homing_active
-                and self.request is not _Request.HOMING
-            ):
-                drive.set_mode(OperationMode.CYCLIC_SYNC_POSITION)
-                self.controlword &= ~CW_BIT_HOMING_START
+        self.master.observe(drive.statusword, int(drive.mode))
+        command = self.master.command()
+        drive.set_mode(command.mode)
+        drive.write_controlword(command.controlword)
+        if not command.follows_setpoints:
+            self.target = drive.position  # enabling or leaving homing never jumps
         drive.write_target(self.target)
 
 
@@ -229,7 +152,7 @@ class SimMotion(_Adapter, MotionBackend):
 
     def __init__(self, world: SimWorld) -> None:
         super().__init__(world, "drives", "sim drives")
-        self._masters = {name: _AxisMaster(drive) for name, drive in world.drives.items()}
+        self._links = {name: _DriveLink(drive, drive.homed) for name, drive in world.drives.items()}
         self._emcy_seen = len(world.emcy_log)
         world.add_sync_hook(self._on_sync)
 
@@ -239,12 +162,12 @@ class SimMotion(_Adapter, MotionBackend):
 
     @property
     def axis_names(self) -> tuple[str, ...]:
-        return tuple(self._masters)
+        return tuple(self._links)
 
     @property
     def command_positions(self) -> Mapping[str, float]:
         """The targets the master sends at every SYNC (for tests and a technician's view)."""
-        return {name: master.target for name, master in self._masters.items()}
+        return {name: link.target for name, link in self._links.items()}
 
     def advance(self, dt_s: float) -> None:
         """TimeDriven: advance the whole simulated world by ``dt_s``."""
@@ -252,8 +175,8 @@ class SimMotion(_Adapter, MotionBackend):
 
     def _on_sync(self) -> None:
         if self._lifecycle is L.ACTIVE:  # cyclic PDOs only while active
-            for master in self._masters.values():
-                master.sync()
+            for link in self._links.values():
+                link.sync()
 
     # -- lifecycle --------------------------------------------------------------------------
     def configure(self) -> None:
@@ -261,10 +184,8 @@ class SimMotion(_Adapter, MotionBackend):
 
     def activate(self) -> None:
         self._transition("activate", L.ACTIVE, L.INACTIVE)
-        for master in self._masters.values():
-            master.target = master.drive.position
-            master.new_target = False
-            master.request = None
+        for name, link in self._links.items():
+            self._links[name] = _DriveLink(link.drive, link.master.homed and link.drive.homed)
 
     def deactivate(self) -> None:
         self._transition("deactivate", L.INACTIVE, L.ACTIVE)
@@ -276,56 +197,57 @@ class SimMotion(_Adapter, MotionBackend):
         self._lifecycle = L.FINALIZED
 
     def _disable_all(self) -> None:
-        for master in self._masters.values():
-            master.request = None
-            master.controlword = CW_DISABLE_VOLTAGE
-            master.drive.write_controlword(CW_DISABLE_VOLTAGE)
+        for link in self._links.values():
+            link.master.disable()
+            link.sync()
 
     # -- cyclic exchange -------------------------------------------------------------------
     def read_axes(self) -> Mapping[str, AxisFeedback]:
         self._require("read_axes", L.INACTIVE, L.ACTIVE)
         self._require_link("read_axes")
-        return {name: master.drive.feedback() for name, master in self._masters.items()}
+        return {name: link.feedback() for name, link in self._links.items()}
 
     def write_setpoints(self, positions: Mapping[str, float]) -> None:
         self._require("write_setpoints", L.ACTIVE)
         self._require_link("write_setpoints")
         for name, value in positions.items():
-            master = self._master(name)
+            link = self._drive_link(name)
             if (
                 isinstance(value, bool)
                 or not isinstance(value, int | float)
                 or not math.isfinite(value)
             ):
                 raise ValueError(f"setpoint {name} = {value!r} is not allowed: a finite number")
-            master.target = float(value)
-            master.new_target = True
+            link.target = float(value)  # the master sends it only while the drive follows
 
-    def _master(self, axis: str) -> _AxisMaster:
-        if axis not in self._masters:
-            raise ValueError(f"axis = {axis!r} is not allowed: one of {', '.join(self._masters)}")
-        return self._masters[axis]
+    def _drive_link(self, axis: str) -> _DriveLink:
+        if axis not in self._links:
+            raise ValueError(f"axis = {axis!r} is not allowed: one of {', '.join(self._links)}")
+        return self._links[axis]
 
-    def _request(self, what: str, axis: str, request: _Request) -> None:
+    def _request(self, what: str, axis: str, request: Callable[[Cia402Master], None]) -> None:
         self._require(what, L.ACTIVE)
-        master = self._master(axis)
+        link = self._drive_link(axis)
         self._require_link(what)
-        master.ask(request)
+        try:
+            request(link.master)
+        except RequestRefusedError as exc:
+            raise DriverError(axis, f"{what.replace('_', ' ')} refused: {exc}") from None
 
     def enable(self, axis: str) -> None:
-        self._request("enable", axis, _Request.ENABLE)
+        self._request("enable", axis, Cia402Master.enable)
 
     def disable(self, axis: str) -> None:
-        self._request("disable", axis, _Request.DISABLE)
+        self._request("disable", axis, Cia402Master.disable)
 
     def quick_stop(self, axis: str) -> None:
-        self._request("quick_stop", axis, _Request.QUICK_STOP)
+        self._request("quick_stop", axis, Cia402Master.quick_stop)
 
     def fault_reset(self, axis: str) -> None:
-        self._request("fault_reset", axis, _Request.FAULT_RESET)
+        self._request("fault_reset", axis, Cia402Master.fault_reset)
 
     def start_homing(self, axis: str) -> None:
-        self._request("start_homing", axis, _Request.HOMING)
+        self._request("start_homing", axis, Cia402Master.start_homing)
 
     def events(self) -> list[DeviceEvent]:
         """Link changes and the drives' EMCY messages since the last call, oldest first."""

@@ -10,21 +10,9 @@ from __future__ import annotations
 
 import enum
 
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import Cia402State
 
 S = Cia402State
-
-CW_BIT_HOMING_START = 1 << 4  # controlword bit 4: homing operation start (homing mode)
-CW_BIT_FAULT_RESET = 1 << 7  # controlword bit 7: fault reset (rising edge)
-SW_VOLTAGE_ENABLED = 1 << 4  # statusword bit 4
-SW_DRIVE_FOLLOWS = 1 << 12  # statusword bit 12 in CSP: drive follows the command value
-
-
-class OperationMode(enum.IntEnum):
-    """0x6060 modes of operation used here."""
-
-    HOMING = 6
-    CYCLIC_SYNC_POSITION = 8
 
 
 class EmcyCode(enum.IntEnum):

@@ -61,26 +61,26 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from app.config import AxisConfig
-from app.drivers.contracts import (
+from app.drivers.cia402 import (
+    CW_FAULT_RESET,
+    CW_HOMING_START,
+    SW_DRIVE_FOLLOWS,
     SW_FOLLOWING_ERROR,
     SW_HOMING_ATTAINED,
     SW_INTERNAL_LIMIT,
     SW_REMOTE,
     SW_TARGET_REACHED,
+    SW_VOLTAGE_ENABLED,
     SW_WARNING,
-    AxisFeedback,
     Cia402State,
+    OperationMode,
 )
+from app.drivers.contracts import AxisFeedback
 from app.drivers.sim.cia402 import (
-    CW_BIT_FAULT_RESET,
-    CW_BIT_HOMING_START,
     EMCY_TEXT,
     STATUSWORD_BASE,
-    SW_DRIVE_FOLLOWS,
-    SW_VOLTAGE_ENABLED,
     TRANSITIONS,
     EmcyCode,
-    OperationMode,
     decode_controlword,
 )
 from app.drivers.sim.settings import SimSettings
@@ -365,8 +365,8 @@ class SimDrive:
         previous = self._cw
         self._cw = controlword
         state = self._state
-        if controlword & CW_BIT_FAULT_RESET:
-            if not previous & CW_BIT_FAULT_RESET and state is S.FAULT and not self._hold_fault:
+        if controlword & CW_FAULT_RESET:
+            if not previous & CW_FAULT_RESET and state is S.FAULT and not self._hold_fault:
                 self._fault_code = 0  # transition 15
                 self._fe_flag = False
                 self._fe_over_s = 0.0
@@ -383,8 +383,8 @@ class SimDrive:
             if not refused_by_sto:
                 self._enter(target_state)
         if self._state is S.OPERATION_ENABLED and self._mode is OperationMode.HOMING:
-            start = controlword & CW_BIT_HOMING_START
-            if start and not previous & CW_BIT_HOMING_START:
+            start = controlword & CW_HOMING_START
+            if start and not previous & CW_HOMING_START:
                 self._start_homing()
             elif not start and self._homing_active:
                 self._homing_phase = HomingPhase.STOP  # bit 4 cleared: homing interrupted

@@ -41,9 +41,11 @@ from canopen.sdo import SdoAbortedError
 
 from app.drivers.canopen import objects as obj
 from app.drivers.canopen.master_heartbeat import HEARTBEAT_COB_BASE, split_consumer_heartbeat_entry
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import CW_HOMING_START, Cia402State, OperationMode
 
 S = Cia402State
+MODE_CSP = int(OperationMode.CYCLIC_SYNC_POSITION)
+MODE_HOMING = int(OperationMode.HOMING)
 NOTIFIER_CYCLE_S = 0.02
 NMT_RESET_NODE = 0x81
 NMT_RESET_COMMUNICATION = 0x82
@@ -604,8 +606,8 @@ class SimDrive(SimNode):
             self.position = self.initial_position
             self.target = self.initial_position
             self.controlword = 0
-            self.mode = obj.MODE_CSP
-            self.mode_display = obj.MODE_CSP
+            self.mode = MODE_CSP
+            self.mode_display = MODE_CSP
             self.error_code = 0
             self.fault_cause_active = False
             self.digital_inputs = 0
@@ -645,11 +647,11 @@ class SimDrive(SimNode):
     @property
     def statusword(self) -> int:
         word = STATE_BITS[self.state] | 0x0200  # remote
-        if self.mode_display == obj.MODE_CSP and self.state is S.OPERATION_ENABLED:
+        if self.mode_display == MODE_CSP and self.state is S.OPERATION_ENABLED:
             word |= 1 << 12  # drive follows the command value
             if self.following_error:
                 word |= 1 << 13
-        if self.mode_display == obj.MODE_HOMING:
+        if self.mode_display == MODE_HOMING:
             if self.homing_left < 0:
                 word |= 1 << 10  # target reached: homing done, interrupted or not started
             if self.homing_attained:
@@ -704,7 +706,7 @@ class SimDrive(SimNode):
         if new_state is S.OPERATION_ENABLED and self.state is not S.OPERATION_ENABLED:
             self.target = self.position  # CSP: a freshly enabled drive holds where it is
         self.state = new_state
-        if self.mode_display == obj.MODE_HOMING and controlword & obj.CW_HOMING_START:
+        if self.mode_display == MODE_HOMING and controlword & CW_HOMING_START:
             self._maybe_start_homing()
 
     def _maybe_start_homing(self) -> None:
@@ -718,7 +720,7 @@ class SimDrive(SimNode):
             return
         if self.state is not S.OPERATION_ENABLED:
             return
-        if self.mode_display == obj.MODE_CSP:
+        if self.mode_display == MODE_CSP:
             self.homing_attained = False
             self.record.targets.append((self.sync_count, self.target))
             step = max(
@@ -730,8 +732,8 @@ class SimDrive(SimNode):
             if abs(self.target - self.position) > window:
                 self.following_error = True
                 self.inject_fault(0x8611)
-        elif self.mode_display == obj.MODE_HOMING:
-            if not self.controlword & obj.CW_HOMING_START:
+        elif self.mode_display == MODE_HOMING:
+            if not self.controlword & CW_HOMING_START:
                 self.homing_left = -1
                 self.homing_attained = False
             elif self.homing_left < 0 and not self.homing_attained:

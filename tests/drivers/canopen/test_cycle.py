@@ -15,7 +15,7 @@ import pytest
 
 from app.cli.simulate import Watch
 from app.config import parse_config
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import Cia402State
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState

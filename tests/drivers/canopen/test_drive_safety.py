@@ -6,15 +6,12 @@ from __future__ import annotations
 
 import pytest
 
-from app.drivers.canopen.cia402 import RESET_EDGE_PERIODS
-from app.drivers.contracts import (
-    Cia402State,
-    DeviceEventKind,
-    DriverError,
-)
+from app.drivers.cia402 import Cia402Master, Cia402State
+from app.drivers.contracts import DeviceEventKind, DriverError
 from tests.drivers.canopen.conftest import Bench, enable_all, period, run_until, start
 
 S = Cia402State
+RESET_EDGE_PERIODS = Cia402Master(reports_mode=True).reset_edge_periods
 
 
 def controlwords_since(drive, sync: int) -> list[int]:

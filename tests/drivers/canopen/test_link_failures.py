@@ -10,8 +10,8 @@ import pytest
 
 from app.config import parse_config
 from app.drivers.canopen.backend import create_backend
+from app.drivers.cia402 import Cia402State
 from app.drivers.contracts import (
-    Cia402State,
     CommunicationError,
     DeviceEventKind,
     DriverError,

@@ -1,4 +1,4 @@
-"""The pure rules, without a bus: controlword table, fault reset, homing phases, the
+"""The pure rules, without a bus (the master's are in tests/drivers/test_cia402_master.py): the
 simulated drive's transition table, the heartbeat watchdog on a simulated clock, bus load,
 EMCY texts, PDO packing, the consumer heartbeat entry and the settings reader."""
 
@@ -7,16 +7,7 @@ from __future__ import annotations
 import pytest
 
 from app.config import ConfigError, parse_config
-from app.drivers.canopen import objects as obj
 from app.drivers.canopen.busload import CyclicFrame, bus_load, frame_bits
-from app.drivers.canopen.cia402 import (
-    NEXT_CONTROLWORD,
-    RESET_EDGE_PERIODS,
-    AxisCommander,
-    CommandRefusedError,
-    HomingPhase,
-    PowerRequest,
-)
 from app.drivers.canopen.emcy_codes import emcy_text
 from app.drivers.canopen.master_heartbeat import (
     consumer_heartbeat_entry,
@@ -26,107 +17,12 @@ from app.drivers.canopen.motion import _interpolation_period
 from app.drivers.canopen.pdo import answered_sync, pack_drive_command, unpack_drive_feedback
 from app.drivers.canopen.settings import settings_from_config
 from app.drivers.canopen.watchdog import HeartbeatWatchdog
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import Cia402State
 from tests.drivers.canopen.conftest import machine_data
 from tests.drivers.canopen.sim_drive import DRIVE_TRANSITIONS, STATE_BITS, _command
 
 S = Cia402State
 SW = STATE_BITS  # a statusword per state
-
-
-# ---- controlword table ----------------------------------------------------------------------
-
-
-def test_every_request_and_state_has_a_controlword_and_none_resets():
-    assert set(NEXT_CONTROLWORD) == {(r, s) for r in PowerRequest for s in Cia402State}
-    assert not any(cw & 0x80 for cw in NEXT_CONTROLWORD.values())
-
-
-@pytest.mark.parametrize(("request_", "state"), sorted(NEXT_CONTROLWORD, key=str))
-def test_each_row_moves_the_simulated_drive_toward_the_request(request_, state):
-    """Walk the simulated drive's table with the backend's controlwords: every start state
-    reaches the requested state (or stays put where the request cannot apply), never
-    through a fault reset."""
-    goal = {
-        PowerRequest.ENABLED: S.OPERATION_ENABLED,
-        PowerRequest.DISABLED: S.SWITCH_ON_DISABLED,
-        PowerRequest.QUICK_STOP: S.QUICK_STOP_ACTIVE,
-    }[request_]
-    current = state
-    for _ in range(4):
-        word = NEXT_CONTROLWORD[(request_, current)]
-        current = DRIVE_TRANSITIONS.get((current, _command(word)), current)
-    if state in (S.FAULT, S.FAULT_REACTION_ACTIVE, S.NOT_READY_TO_SWITCH_ON):
-        assert current is state  # only the drive itself or an operator's reset leaves these
-    elif (
-        request_ is PowerRequest.QUICK_STOP
-        and state is not S.OPERATION_ENABLED
-        and state is not S.QUICK_STOP_ACTIVE
-    ):
-        assert current is S.SWITCH_ON_DISABLED  # quick stop of a drive not enabled
-    else:
-        assert current is goal
-
-
-def test_a_fault_drops_the_request_to_disabled():
-    commander = AxisCommander()
-    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
-    commander.enable()
-    commander.observe(SW[S.FAULT], obj.MODE_CSP)
-    assert commander.request is PowerRequest.DISABLED
-    with pytest.raises(CommandRefusedError, match="FAULT"):
-        commander.enable()
-    assert commander.command() == (0x00, obj.MODE_CSP)
-
-
-def test_fault_reset_sequence():
-    commander = AxisCommander()
-    commander.observe(SW[S.FAULT], obj.MODE_CSP)
-    commander.fault_reset()
-    assert commander.command()[0] == 0x00  # bit 7 low first
-    assert commander.command()[0] == 0x80  # then the rising edge
-    assert commander.command()[0] == 0x80  # held while the drive is still in FAULT
-    commander.observe(SW[S.SWITCH_ON_DISABLED], obj.MODE_CSP)
-    assert [commander.command()[0] for _ in range(5)] == [0x00] * 5  # and stays disabled
-
-
-def test_fault_reset_gives_up_after_a_bounded_edge():
-    commander = AxisCommander()
-    commander.observe(SW[S.FAULT], obj.MODE_CSP)
-    commander.fault_reset()
-    words = [commander.command()[0] for _ in range(RESET_EDGE_PERIODS + 10)]
-    assert words[0] == 0x00 and words.count(0x80) == RESET_EDGE_PERIODS
-    assert words[-1] == 0x00
-
-
-def test_homing_phases():
-    commander = AxisCommander()
-    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
-    commander.enable()
-    commander.start_homing()
-    assert commander.homing_active
-    assert commander.command() == (0x0F, obj.MODE_HOMING)  # select the mode first
-    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10, obj.MODE_HOMING)
-    assert commander.command() == (0x1F, obj.MODE_HOMING)  # bit 4: start
-    # an old "attained" from a previous homing does not count before the drive restarted
-    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10 | 1 << 12, obj.MODE_HOMING)
-    assert commander.homing is HomingPhase.RUNNING and not commander.homed
-    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_HOMING)  # in progress
-    commander.observe(SW[S.OPERATION_ENABLED] | 1 << 10 | 1 << 12, obj.MODE_HOMING)
-    assert commander.homed and commander.homing is HomingPhase.RETURN
-    assert commander.command() == (0x0F, obj.MODE_CSP)
-    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
-    assert not commander.homing_active
-
-
-def test_homing_is_aborted_by_a_quick_stop():
-    commander = AxisCommander()
-    commander.observe(SW[S.OPERATION_ENABLED], obj.MODE_CSP)
-    commander.enable()
-    commander.start_homing()
-    commander.quick_stop()
-    assert commander.command() == (0x02, obj.MODE_CSP)
-    assert not commander.homed
 
 
 # ---- simulated drive's table ------------------------------------------------------------------

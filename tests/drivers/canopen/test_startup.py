@@ -9,7 +9,8 @@ import pytest
 
 from app.drivers.canopen import objects as obj
 from app.drivers.canopen.pdo import DRIVE_RPDO1, DRIVE_TPDO1, PDO_NOT_VALID, drive_tpdo2
-from app.drivers.contracts import Cia402State, LifecycleError, LifecycleState
+from app.drivers.cia402 import Cia402State
+from app.drivers.contracts import LifecycleError, LifecycleState
 from tests.drivers.canopen.conftest import COUNTS, NODE_IDS, Bench, enable_all, period, start
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from app.cli.simulate import Watch
 from app.config import parse_config
-from app.drivers.contracts import Cia402State
+from app.drivers.cia402 import Cia402State
 from app.drivers.modbus.emulator import ModbusEmulator
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime

@@ -14,8 +14,8 @@ import pytest
 from pymodbus.client import ModbusTcpClient
 
 from app.config import parse_config
+from app.drivers.cia402 import Cia402State
 from app.drivers.contracts import (
-    Cia402State,
     CommunicationError,
     DeviceEventKind,
     DriverError,
@@ -450,7 +450,7 @@ def test_lifecycle_rules() -> None:
         io.activate()
         with pytest.raises(DriverError, match="no such axis"):
             motion.enable("W")
-        with pytest.raises(DriverError, match="homing needs the drive enabled"):
+        with pytest.raises(DriverError, match="homing needs OPERATION ENABLED"):
             motion.start_homing("X")
         with pytest.raises(DriverError, match="does not fit int32"):
             motion.write_setpoints({"X": 1e9})

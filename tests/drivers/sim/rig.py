@@ -10,7 +10,8 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.config import MachineConfig, default_config_path, parse_config
-from app.drivers.contracts import AxisFeedback, Cia402State
+from app.drivers.cia402 import Cia402State
+from app.drivers.contracts import AxisFeedback
 from app.drivers.sim.backend import SimIO, SimMotion, create_backend
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.world import SimWorld

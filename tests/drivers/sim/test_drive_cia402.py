@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from app.drivers.contracts import (
+from app.drivers.cia402 import (
     CW_DISABLE_VOLTAGE,
     CW_ENABLE_OPERATION,
     CW_FAULT_RESET,

@@ -5,10 +5,9 @@ from __future__ import annotations
 
 import pytest
 
+from app.drivers.cia402 import SW_FOLLOWING_ERROR, Cia402State
 from app.drivers.contracts import (
     FAULT_KINDS,
-    SW_FOLLOWING_ERROR,
-    Cia402State,
     CommunicationError,
     DeviceEventKind,
     FaultInjector,

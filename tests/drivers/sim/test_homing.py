@@ -5,13 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from app.drivers.contracts import (
-    SW_HOMING_ATTAINED,
-    SW_TARGET_REACHED,
-    AxisFeedback,
-    Cia402State,
-)
-from app.drivers.sim.cia402 import OperationMode
+from app.drivers.cia402 import Cia402State, OperationMode
+from app.drivers.contracts import AxisFeedback, DriverError
 from tests.drivers.sim.rig import Rig, make_config
 
 S = Cia402State
@@ -52,7 +47,8 @@ def home(rig: Rig, axis: str = "X", timeout_s: float = 30.0) -> list[AxisFeedbac
 def assert_homed_at_the_edge(rig: Rig, direction: int) -> None:
     fb = rig.fb("X")
     assert fb.homed and not fb.homing_active and fb.enabled
-    assert fb.statusword & SW_HOMING_ATTAINED and fb.statusword & SW_TARGET_REACHED
+    # The master saw "homing attained" and "target reached", then returned to CSP.
+    assert rig.world.drives["X"].mode is OperationMode.CYCLIC_SYNC_POSITION
     # Stopped just past the edge, in the homing direction (creep speed braked).
     assert 0.0 < (fb.position - EDGE) * direction < 0.05
     # The encoder now reads the machine frame: the same as a ruler on the machine.
@@ -179,7 +175,8 @@ def test_homing_fails_with_a_fault_when_no_switch_is_found() -> None:
 
 def test_homing_is_not_started_on_a_disabled_drive() -> None:
     rig = homing_rig(200.0, -1)
-    rig.motion.start_homing("X")
+    with pytest.raises(DriverError, match="homing needs OPERATION ENABLED"):
+        rig.motion.start_homing("X")
     rig.run(0.5)
     fb = rig.fb("X")
     assert not fb.homing_active and not fb.homed

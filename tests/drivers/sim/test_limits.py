@@ -4,12 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from app.drivers.contracts import (
-    SW_INTERNAL_LIMIT,
-    SW_WARNING,
-    Cia402State,
-    DeviceEventKind,
-)
+from app.drivers.cia402 import SW_INTERNAL_LIMIT, SW_WARNING, Cia402State
+from app.drivers.contracts import DeviceEventKind
 from tests.drivers.sim.rig import Rig, make_config
 
 S = Cia402State

@@ -5,12 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from app.drivers.contracts import (
-    SW_FOLLOWING_ERROR,
-    AxisFeedback,
-    Cia402State,
-    DeviceEventKind,
-)
+from app.drivers.cia402 import SW_FOLLOWING_ERROR, Cia402State
+from app.drivers.contracts import AxisFeedback, DeviceEventKind
 from app.drivers.sim.cia402 import EmcyCode
 from tests.drivers.sim.rig import Rig, trapezoid
 
@@ -98,8 +94,8 @@ def test_quick_stop_brakes_and_holds_then_enable_continues() -> None:
     rig.run(0.5)
     assert rig.fb("X").position == pytest.approx(stopped_at, abs=0.01)  # held, not coasting
     rig.command["X"] = stopped_at
-    rig.motion.enable("X")  # transition 16
-    rig.tick(2)
+    rig.motion.enable("X")  # through SWITCH ON DISABLED: transitions 12, 2, 3, 4
+    rig.tick(5)
     assert rig.fb("X").enabled
 
 
