@@ -1,5 +1,6 @@
-"""The layering rules, checked on the source: geometry, machine, drivers and data import no
-Qt; geometry imports nothing of the other layers; screens import no driver and no motion code.
+"""The layering rules, checked on the source: geometry, programs, machine, drivers and data
+import no Qt; geometry and the program writers import nothing of the other layers; screens
+import no driver and no motion code.
 
 Every import statement counts, including those inside functions (lazy imports), because a
 lazy import of Qt in the machine process is as wrong as a top-level one.
@@ -19,6 +20,15 @@ FIELDBUS = ("pymodbus", "can", "canopen", "serial")
 # package -> forbidden module prefixes
 RULES: dict[str, tuple[str, ...]] = {
     "geometry": (*QT, *FIELDBUS, "app.machine", "app.drivers", "app.data", "app.screens"),
+    "programs": (
+        *QT,
+        *FIELDBUS,
+        "app.machine",
+        "app.drivers",
+        "app.data",
+        "app.screens",
+        "app.cli",
+    ),
     "machine": (*QT, "app.screens", "app.cli"),
     "drivers": (*QT, "app.screens", "app.machine", "app.data"),
     "data": (*QT, *FIELDBUS, "app.screens", "app.machine", "app.drivers"),

@@ -1,0 +1,120 @@
+"""The stave as a DXF drawing for the cooperage's CAD: outline, tool path and points.
+
+Layers: OUTLINE (the finished stave at table level: both sides and both heads), TOOLPATH_A
+and TOOLPATH_B (the tool centre's cutting moves, leads included), TRAVEL (the non-cutting
+moves), POINTS (P1..P8 as POINT entities with their names as TEXT). Everything in mm, in
+machine coordinates (the profile moved by P0), so the outline and the path line up as on
+the machine. Lines are LINE entities and arcs ARC entities (DXF arcs run counter-clockwise,
+so a clockwise arc is written from its end to its start). Written with ezdxf.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+
+from ezdxf import units
+from ezdxf.document import Drawing
+from ezdxf.filemanagement import new
+from ezdxf.layouts.layout import Modelspace
+
+from app.geometry.segments import ArcSegment, LineSegment, Segment
+from app.geometry.toolpath import ToolPath
+from app.programs.header import ProgramInfo
+
+LAYERS = {"OUTLINE": 7, "TOOLPATH_A": 1, "TOOLPATH_B": 5, "TRAVEL": 8, "POINTS": 3}
+"""Layer name -> ACI colour."""
+POINT_LABEL_HEIGHT_MM = 10.0
+
+Point = tuple[float, float]
+
+
+def _angle_deg(center: Point, point: Point) -> float:
+    return math.degrees(math.atan2(point[1] - center[1], point[0] - center[0]))
+
+
+def _add_segment(space: Modelspace, segment: Segment, layer: str) -> None:
+    attribs = {"layer": layer}
+    if isinstance(segment, ArcSegment):
+        start, end = (
+            (segment.end, segment.start)
+            if segment.clockwise
+            else (
+                segment.start,
+                segment.end,
+            )
+        )
+        space.add_arc(
+            segment.center,
+            segment.radius_mm,
+            _angle_deg(segment.center, start),
+            _angle_deg(segment.center, end),
+            dxfattribs=attribs,
+        )
+    elif segment.length_mm > 0.0:
+        space.add_line(segment.start, segment.end, dxfattribs=attribs)
+
+
+def _outline(toolpath: ToolPath) -> list[Segment]:
+    """The finished stave's edges (machine coordinates) as exact lines and arcs."""
+    profile, params = toolpath.profile, toolpath.params
+    x0, y0 = params.start_x_mm, params.start_y_mm
+
+    def at(name: str) -> Point:
+        x, y = profile.points[name]
+        return (x + x0, y + y0)
+
+    def centre(point: Point) -> Point:
+        return (point[0] + x0, point[1] + y0)
+
+    def line(a: str, b: str) -> LineSegment:
+        return LineSegment(at(a), at(b), 0.0, 0.0, False, "")
+
+    edges: list[Segment] = []
+    for first, arc_from, arc_to, last, arc_centre in (
+        ("P1", "P2", "P3", "P4", profile.arc_center_a),
+        ("P5", "P6", "P7", "P8", profile.arc_center_b),
+    ):
+        if at(first) != at(arc_from):
+            edges.append(line(first, arc_from))
+        edges.append(
+            ArcSegment(at(arc_from), at(arc_to), centre(arc_centre), True, 0.0, 0.0, False, "")
+        )
+        if at(arc_to) != at(last):
+            edges.append(line(arc_to, last))
+    edges.insert(len(edges) // 2, line("P4", "P5"))
+    edges.append(line("P8", "P1"))
+    return edges
+
+
+def drawing(toolpath: ToolPath, info: ProgramInfo) -> Drawing:
+    """The DXF document of this tool path's stave."""
+    doc = new("R2010", setup=False)
+    doc.units = units.MM
+    doc.header["$MEASUREMENT"] = 1  # metric
+    for name, colour in LAYERS.items():
+        doc.layers.add(name, color=colour)
+    space = doc.modelspace()
+    for segment in _outline(toolpath):
+        _add_segment(space, segment, "OUTLINE")
+    for segment in toolpath.segments:
+        layer = f"TOOLPATH_{segment.side}" if segment.cutting else "TRAVEL"
+        _add_segment(space, segment, layer)
+    x0, y0 = toolpath.params.start_x_mm, toolpath.params.start_y_mm
+    for name, (x, y) in toolpath.profile.points.items():
+        space.add_point((x + x0, y + y0), dxfattribs={"layer": "POINTS"})
+        label = space.add_text(name, height=POINT_LABEL_HEIGHT_MM, dxfattribs={"layer": "POINTS"})
+        label.set_placement((x + x0, y + y0))
+    space.add_text(
+        f"recipe {info.recipe_name}, {info.describe_width()}, {info.stamp()}",
+        height=POINT_LABEL_HEIGHT_MM,
+        dxfattribs={"layer": "OUTLINE"},
+    ).set_placement((x0, y0 - toolpath.profile.width_mm - 4 * POINT_LABEL_HEIGHT_MM))
+    return doc
+
+
+def drawing_text(toolpath: ToolPath, info: ProgramInfo) -> str:
+    """The DXF file's content."""
+    stream = io.StringIO()
+    drawing(toolpath, info).write(stream)
+    return stream.getvalue()

@@ -1,0 +1,81 @@
+"""The fixed program of one stave in LinuxCNC's dialect (RS274/NGC as LinuxCNC 2.9 reads it).
+
+Words: G21 mm, G17 X-Y plane, G90 absolute, G91.1 arc centres relative to the arc's start,
+G94 feed in mm/min, G40/G49 no cutter or length compensation (the tool path is already the
+tool centre's), G64 P0.001 so that blending never leaves the path by more than 1 um. The G54
+offset is set to zero and G92 cancelled, so the coordinates are the jointer's machine
+coordinates whatever offsets the control held. The tilt is the rotary axis A in degrees.
+Checked in the test suite by LinuxCNC's own interpreter, rs274.
+"""
+
+from __future__ import annotations
+
+from app.programs.header import ProgramInfo, format_number, plain_text
+from app.programs.moves import Move, MoveKind, StaveMoves
+
+MODAL_SETUP = "G21 G17 G90 G91.1 G94 G40 G49 G80 G64 P0.001"
+ZERO_OFFSETS = "G10 L2 P1 X0 Y0 Z0 A0 (G54 = machine coordinates)\nG54\nG92.1"
+
+
+def comment(text: str) -> str:
+    """A LinuxCNC comment; parentheses inside would end it early."""
+    return f"({plain_text(text, '()')})"
+
+
+def header_lines(info: ProgramInfo, tilt_line: str) -> list[str]:
+    return [
+        "%",
+        comment(f"stave jointer program, recipe {info.recipe_name}, {info.describe_width()}"),
+        comment(info.stamp()),
+        comment("machine coordinates in mm; the tilt is the rotary axis A in degrees"),
+        comment(tilt_line),
+        comment(info.describe_arcs()),
+        MODAL_SETUP,
+        *ZERO_OFFSETS.splitlines(),
+    ]
+
+
+def spindle_on_lines(info: ProgramInfo) -> list[str]:
+    return [
+        f"M3 S{format_number(info.spindle_rpm, 0)}",
+        f"G4 P{format_number(info.spindle_runup_s, 1)} (spindle run-up)",
+        f"F{format_number(info.feed_mm_min, 1)} (cutting feed, mm/min)",
+    ]
+
+
+def _move_line(move: Move, start: tuple[float, float]) -> str:
+    x, y = format_number(move.end[0]), format_number(move.end[1])
+    if move.kind is MoveKind.RAPID:
+        return f"G0 X{x} Y{y} A{format_number(move.tilt_deg)}"
+    if move.kind is MoveKind.FEED:
+        return f"G1 X{x} Y{y}"
+    assert move.center is not None
+    word = "G2" if move.kind is MoveKind.ARC_CW else "G3"
+    # The centre relative to the start as written (rounded), so the control's radius check
+    # sees the same circle through both written ends.
+    i = move.center[0] - float(format_number(start[0]))
+    j = move.center[1] - float(format_number(start[1]))
+    return f"{word} X{x} Y{y} I{format_number(i)} J{format_number(j)}"
+
+
+def write_program(moves: StaveMoves, info: ProgramInfo) -> str:
+    """The complete program text (ends with a newline)."""
+    tilt_line = (
+        f"side A at A = {format_number(moves.tilt_a_deg)}, "
+        f"side B at A = {format_number(moves.tilt_b_deg)} deg"
+    )
+    lines = header_lines(info, tilt_line)
+    sx, sy = moves.start
+    lines.append(comment("start at home"))
+    lines.append(
+        f"G0 X{format_number(sx)} Y{format_number(sy)} A{format_number(moves.start_tilt_deg)}"
+    )
+    lines.extend(spindle_on_lines(info))
+    position = moves.start
+    for section in moves.sections:
+        lines.append(comment(section.section.value))
+        for move in section.moves:
+            lines.append(_move_line(move, position))
+            position = move.end
+    lines += ["M5", "M2", "%"]
+    return "\n".join(lines) + "\n"
