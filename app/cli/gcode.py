@@ -61,8 +61,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--dialect",
-        choices=[d.value for d in Dialect],
         default=Dialect.LINUXCNC.value,
+        metavar="|".join(d.value for d in Dialect),
         help="the control's dialect (default linuxcnc)",
     )
     parser.add_argument(
@@ -140,6 +140,9 @@ def _recipe_and_parameters(
 
 
 def _options(args: argparse.Namespace, config: MachineConfig) -> ExportOptions:
+    dialects = [d.value for d in Dialect]
+    if args.dialect not in dialects:
+        raise UsageError(f"--dialect {args.dialect!r} is not allowed: one of {', '.join(dialects)}")
     chords = None
     if args.chords is not None:
         chords = _number("--chords", args.chords, "a chord error in mm")
