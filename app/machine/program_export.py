@@ -15,11 +15,13 @@ from datetime import UTC, datetime
 from enum import Enum
 
 from app import __version__
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import Recipe
+from app.geometry.barrel import RoundBarrelTilt
+from app.geometry.bevel import FixedTilt
 from app.geometry.errors import FieldError, GeometryError
-from app.geometry.limits import StaveLimits, check_toolpath_travel, validate_stave
-from app.geometry.profile import solve_profile
-from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
+from app.geometry.limits import StaveLimits
+from app.geometry.stave_cut import cut_stave, toolpath_params
+from app.geometry.toolpath import ToolPath
 from app.machine.preview import nominal_width_mm
 from app.programs import dxf, linuxcnc, sinumerik
 from app.programs.header import ProgramInfo
@@ -54,36 +56,9 @@ class ExportOptions:
 def stave_toolpath(
     recipe: Recipe, width_mm: float, params: Mapping[str, float], limits: StaveLimits
 ) -> ToolPath:
-    """The tool path the machine cuts for this board; GeometryError with every reason if the
-    machine would refuse the board (width, tilt, parameters, axis travel)."""
-    try:
-        tilt_deg = recipe.tilt_for_width_deg(width_mm, limits)
-    except GeometryError:
-        raise
-    except (ValueError, ArithmeticError) as exc:
-        allowed = "a width the recipe's tilt rule accepts"
-        raise GeometryError(
-            [FieldError("width_mm", width_mm, allowed, f"width_mm = {width_mm}: {exc}")]
-        ) from exc
-    errors = validate_stave(
-        recipe.length_mm,
-        width_mm,
-        recipe.length_ratio.value,
-        recipe.width_ratio.value,
-        limits,
-        thickness_mm=recipe.thickness_mm,
-        tilt_deg=tilt_deg,
-    )
-    if errors:
-        raise GeometryError(errors)
-    profile = solve_profile(
-        recipe.length_mm, width_mm, recipe.length_ratio.value, recipe.width_ratio.value, limits
-    )
-    toolpath = build_toolpath(profile, ToolPathParams.from_parameters(params, tilt_deg))
-    travel = check_toolpath_travel(toolpath, limits)
-    if travel:
-        raise GeometryError(travel)
-    return toolpath
+    """The tool path the machine cuts for this board (the machine's own composition,
+    ``cut_stave``); StaveCutRefused with every reason if the machine would refuse it."""
+    return cut_stave(recipe.stave, width_mm, params, limits).toolpath
 
 
 def _accepts(accepts: Callable[[float], bool], width_mm: float) -> bool:
@@ -149,19 +124,29 @@ def parametric_stave(
     low, high = found
     default = seed if low <= seed <= high else round(0.5 * (low + high))
     default = min(max(default, low), high)
-    barrel = recipe.tilt_mode is TiltMode.BARREL
-    tilt = recipe.tilt_for_width_deg(default, limits)
+    cut = cut_stave(recipe.stave, default, params, limits)
+    rule = recipe.tilt_rule
+    if isinstance(rule, RoundBarrelTilt):
+        barrel_mm = rule.diameter_mm
+    elif isinstance(rule, FixedTilt):
+        barrel_mm = None
+    else:
+        allowed = "a fixed tilt or a round barrel's tilt"
+        message = (
+            f"recipe {recipe.name!r}: its tilt rule has no parametric program: allowed {allowed}"
+        )
+        raise GeometryError([FieldError("tilt_mode", recipe.tilt_mode.value, allowed, message)])
     return ParametricStave(
         length_mm=recipe.length_mm,
         length_ratio=recipe.length_ratio.value,
         width_ratio=recipe.width_ratio.value,
-        tilt_a_deg=tilt,
-        tilt_b_deg=tilt,
-        barrel_diameter_mm=recipe.barrel_diameter_mm if barrel else None,
+        tilt_a_deg=cut.tilts.a_deg,
+        tilt_b_deg=cut.tilts.b_deg,
+        barrel_diameter_mm=barrel_mm,
         width_min_mm=low,
         width_max_mm=high,
         default_width_mm=default,
-        machine=ToolPathParams.from_parameters(params, tilt),
+        machine=toolpath_params(params, cut.tilts),
     )
 
 
