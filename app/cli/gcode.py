@@ -20,6 +20,7 @@ import sys
 from collections.abc import Mapping
 from pathlib import Path
 
+from app.cli.recipe_args import add_recipe_source
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.errors import DataError
 from app.data.recipe import Recipe
@@ -44,14 +45,7 @@ class UsageError(Exception):
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    source = parser.add_mutually_exclusive_group(required=True)
-    source.add_argument("--recipe", metavar="NAME", help="recipe name in the database")
-    source.add_argument(
-        "--recipe-file",
-        type=Path,
-        metavar="FILE",
-        help="recipe file (JSON or CSV, as `stave db` exports them; the first recipe is used)",
-    )
+    add_recipe_source(parser)
     board = parser.add_mutually_exclusive_group(required=True)
     board.add_argument("--width", metavar="MM", help="the board's measured width")
     board.add_argument(

@@ -24,6 +24,7 @@ from typing import Any, TextIO
 
 import numpy as np
 
+from app.cli.recipe_args import add_recipe_source
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
 from app.drivers.contracts import FAULT_KINDS, FaultInjector
@@ -154,14 +155,7 @@ class CycleReport:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    source = parser.add_mutually_exclusive_group(required=True)
-    source.add_argument("--recipe", metavar="NAME", help="recipe name in the database")
-    source.add_argument(
-        "--recipe-file",
-        type=Path,
-        metavar="FILE",
-        help="JSON recipe file (one recipe object or a list; the first is used)",
-    )
+    add_recipe_source(parser)
     parser.add_argument(
         "--width", type=float, required=True, metavar="MM", help="width of every board put in"
     )

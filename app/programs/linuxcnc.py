@@ -11,7 +11,7 @@ Checked in the test suite by LinuxCNC's own interpreter, rs274.
 from __future__ import annotations
 
 from app.programs.header import ProgramInfo, format_number, plain_text
-from app.programs.moves import Move, MoveKind, StaveMoves
+from app.programs.moves import StaveMoves, motion_blocks
 
 MODAL_SETUP = "G21 G17 G90 G91.1 G94 G40 G49 G80 G64 P0.001"
 ZERO_OFFSETS = "G10 L2 P1 X0 Y0 Z0 A0 (G54 = machine coordinates)\nG54\nG92.1"
@@ -43,21 +43,6 @@ def spindle_on_lines(info: ProgramInfo) -> list[str]:
     ]
 
 
-def _move_line(move: Move, start: tuple[float, float]) -> str:
-    x, y = format_number(move.end[0]), format_number(move.end[1])
-    if move.kind is MoveKind.RAPID:
-        return f"G0 X{x} Y{y} A{format_number(move.tilt_deg)}"
-    if move.kind is MoveKind.FEED:
-        return f"G1 X{x} Y{y}"
-    assert move.center is not None
-    word = "G2" if move.kind is MoveKind.ARC_CW else "G3"
-    # The centre relative to the start as written (rounded), so the control's radius check
-    # sees the same circle through both written ends.
-    i = move.center[0] - float(format_number(start[0]))
-    j = move.center[1] - float(format_number(start[1]))
-    return f"{word} X{x} Y{y} I{format_number(i)} J{format_number(j)}"
-
-
 def write_program(moves: StaveMoves, info: ProgramInfo) -> str:
     """The complete program text (ends with a newline)."""
     tilt_line = (
@@ -71,11 +56,6 @@ def write_program(moves: StaveMoves, info: ProgramInfo) -> str:
         f"G0 X{format_number(sx)} Y{format_number(sy)} A{format_number(moves.start_tilt_deg)}"
     )
     lines.extend(spindle_on_lines(info))
-    position = moves.start
-    for section in moves.sections:
-        lines.append(comment(section.section.value))
-        for move in section.moves:
-            lines.append(_move_line(move, position))
-            position = move.end
+    lines += motion_blocks(moves, comment)
     lines += ["M5", "M2", "%"]
     return "\n".join(lines) + "\n"

@@ -11,12 +11,14 @@ control). Sections carry the comment that names them in the program.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 
 from app.geometry.polyline import segment_points
 from app.geometry.segments import ArcSegment, Segment
 from app.geometry.toolpath import ToolPath
+from app.programs.header import format_number
 
 Point = tuple[float, float]
 
@@ -141,3 +143,31 @@ def stave_moves(toolpath: ToolPath, chord_error_mm: float | None = None) -> Stav
         tilt_a_deg=side_tilt_deg(toolpath, "A"),
         tilt_b_deg=side_tilt_deg(toolpath, "B"),
     )
+
+
+def motion_block(move: Move, start: Point) -> str:
+    """The move's words, the same in both dialects: G0/G1 X Y (A on rapid moves, where the
+    tilt changes), G2/G3 X Y I J with the centre relative to the start as written (rounded),
+    so the control's radius check sees one circle through both written ends."""
+    x, y = format_number(move.end[0]), format_number(move.end[1])
+    if move.kind is MoveKind.RAPID:
+        return f"G0 X{x} Y{y} A{format_number(move.tilt_deg)}"
+    if move.kind is MoveKind.FEED:
+        return f"G1 X{x} Y{y}"
+    assert move.center is not None
+    word = "G2" if move.kind is MoveKind.ARC_CW else "G3"
+    i = move.center[0] - float(format_number(start[0]))
+    j = move.center[1] - float(format_number(start[1]))
+    return f"{word} X{x} Y{y} I{format_number(i)} J{format_number(j)}"
+
+
+def motion_blocks(moves: StaveMoves, section_comment: Callable[[str], str]) -> list[str]:
+    """Every section's comment and blocks, in order."""
+    lines: list[str] = []
+    position = moves.start
+    for section in moves.sections:
+        lines.append(section_comment(section.section.value))
+        for move in section.moves:
+            lines.append(motion_block(move, position))
+            position = move.end
+    return lines

@@ -201,6 +201,27 @@ def _push(x: str, y: str) -> list[str]:
     ]
 
 
+def _travel_around_the_board(labels: _Labels, side_point: str, to_side: bool) -> list[str]:
+    """The waypoints between home and a side's lead-in start or lead-out end (left of the
+    board): o<route> gives the corners from the side point towards home; the approach walks
+    them backwards, the return forwards."""
+    side = (f"#<_{side_point}_x>", f"#<_{side_point}_y>")
+    home = ("#<_home_x>", "#<_home_y>")
+    lines = [
+        f"o<route> call [{side[0]}] [{side[1]}] [{home[0]}] [{home[1]}]",
+        f"{WAY_COUNT} = 0",
+        *_push(*(home if to_side else side)),
+    ]
+    for corner in (2, 1) if to_side else (1, 2):
+        label = labels.take()
+        lines += [
+            f"{label} if [#<_route_points> GE {corner}]",
+            *("  " + line for line in _push(f"#<_route_{corner}_x>", f"#<_route_{corner}_y>")),
+            f"{label} endif",
+        ]
+    return lines + _push(*(side if to_side else home))
+
+
 def _bisection(labels: _Labels) -> list[str]:
     """D by bisection of f(D) = D^3 - 2CD^2 + (C^2 - B^2 - 2AB)D + 2ABC on [0, C]."""
     straight, loop, sign = labels.take(), labels.take(), labels.take()
@@ -347,12 +368,12 @@ def write_parametric_program(stave: ParametricStave, info: ProgramInfo) -> str:
     refuse = labels.take()
     lines = [
         *header_lines(info, tilt_line),
-        *_subroutines(labels),
-        comment(f"the board's width at the belly in mm: set it for each board ({low} to {high})"),
+        comment(f"the board's width at the belly in mm: set it for each board, {low} to {high}"),
         f"#<width> = {format_number(stave.default_width_mm, 3)}",
         f"{refuse} if [[#<width> LT {low}] OR [#<width> GT {high}]]",
         f"  (abort, width outside what this recipe accepts: {low} to {high} mm)",
         f"{refuse} endif",
+        *_subroutines(labels),
         comment("recipe"),
         f"#<_length> = {exact(stave.length_mm)}",
         f"#<_length_ratio> = {exact(stave.length_ratio)}",
@@ -380,19 +401,9 @@ def write_parametric_program(stave: ParametricStave, info: ProgramInfo) -> str:
         "G0 X#<_home_x> Y#<_home_y> A#<_home_z>",
         *spindle_on_lines(info),
         comment("approach: from home to the side A lead-in, tilting to side A"),
-        "o<route> call [#<_in_a_x>] [#<_in_a_y>] [#<_home_x>] [#<_home_y>]",
-        f"{WAY_COUNT} = 0",
-        *_push("#<_home_x>", "#<_home_y>"),
     ]
-    two, one = labels.take(), labels.take()
+    lines += _travel_around_the_board(labels, "in_a", to_side=True)
     lines += [
-        f"{two} if [#<_route_points> GE 2]",
-        *("  " + line for line in _push("#<_route_2_x>", "#<_route_2_y>")),
-        f"{two} endif",
-        f"{one} if [#<_route_points> GE 1]",
-        *("  " + line for line in _push("#<_route_1_x>", "#<_route_1_y>")),
-        f"{one} endif",
-        *_push("#<_in_a_x>", "#<_in_a_y>"),
         "o<travel> call [#<_home_z>] [#<_tilt_a>]",
         comment("side A: lead-in, P1 to P4, lead-out"),
         *_cut("a", "q1", "q2", "q3", "q4"),
@@ -403,19 +414,9 @@ def write_parametric_program(stave: ParametricStave, info: ProgramInfo) -> str:
         comment("side B: lead-in, P5 to P8, lead-out"),
         *_cut("b", "q5", "q6", "q7", "q8"),
         comment("return: home, tilting back"),
-        "o<route> call [#<_out_b_x>] [#<_out_b_y>] [#<_home_x>] [#<_home_y>]",
-        f"{WAY_COUNT} = 0",
-        *_push("#<_out_b_x>", "#<_out_b_y>"),
     ]
-    first, second = labels.take(), labels.take()
+    lines += _travel_around_the_board(labels, "out_b", to_side=False)
     lines += [
-        f"{first} if [#<_route_points> GE 1]",
-        *("  " + line for line in _push("#<_route_1_x>", "#<_route_1_y>")),
-        f"{first} endif",
-        f"{second} if [#<_route_points> GE 2]",
-        *("  " + line for line in _push("#<_route_2_x>", "#<_route_2_y>")),
-        f"{second} endif",
-        *_push("#<_home_x>", "#<_home_y>"),
         "o<travel> call [0 - #<_tilt_b>] [#<_home_z>]",
         "M5",
         "M2",

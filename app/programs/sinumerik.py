@@ -13,24 +13,11 @@ written from.
 from __future__ import annotations
 
 from app.programs.header import ProgramInfo, format_number, plain_text
-from app.programs.moves import Move, MoveKind, StaveMoves
+from app.programs.moves import StaveMoves, motion_blocks
 
 
 def comment(text: str) -> str:
     return f"; {plain_text(text, '')}"
-
-
-def _move_line(move: Move, start: tuple[float, float]) -> str:
-    x, y = format_number(move.end[0]), format_number(move.end[1])
-    if move.kind is MoveKind.RAPID:
-        return f"G0 X{x} Y{y} A{format_number(move.tilt_deg)}"
-    if move.kind is MoveKind.FEED:
-        return f"G1 X{x} Y{y}"
-    assert move.center is not None
-    word = "G2" if move.kind is MoveKind.ARC_CW else "G3"
-    i = move.center[0] - float(format_number(start[0]))
-    j = move.center[1] - float(format_number(start[1]))
-    return f"{word} X{x} Y{y} I{format_number(i)} J{format_number(j)}"
 
 
 def write_program(moves: StaveMoves, info: ProgramInfo) -> str:
@@ -52,11 +39,6 @@ def write_program(moves: StaveMoves, info: ProgramInfo) -> str:
         f"G4 F{format_number(info.spindle_runup_s, 1)} ; spindle run-up, s",
         f"F{format_number(info.feed_mm_min, 1)} ; cutting feed, mm/min",
     ]
-    position = moves.start
-    for section in moves.sections:
-        lines.append(comment(section.section.value))
-        for move in section.moves:
-            lines.append(_move_line(move, position))
-            position = move.end
+    lines += motion_blocks(moves, comment)
     lines += ["M5", "M30"]
     return "\n".join(lines) + "\n"

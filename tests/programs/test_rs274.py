@@ -118,9 +118,7 @@ def compare(toolpath: ToolPath, moves: list[CanonicalMove], chords_mm: float | N
         _check_segment(segment, move, position)
         position = (move.x, move.y)
     assert queue == []
-    tilts = {
-        side: {s.z_end_deg for s in toolpath.side_segments(side)} for side in ("A", "B")
-    }
+    tilts = {side: {s.z_end_deg for s in toolpath.side_segments(side)} for side in ("A", "B")}
     cut = [m for m in moves if m.call != "STRAIGHT_TRAVERSE"]
     assert {round(m.a, 4) for m in cut} == {round(t, 4) for side in tilts.values() for t in side}
 

@@ -32,9 +32,7 @@ def _blocks(text: str) -> list[dict[str, float]]:
 def test_words_and_motion_match_the_tool_path(recipe: Recipe) -> None:
     width = 160.0
     toolpath = stave_toolpath(recipe, width, PARAMS, LIMITS)
-    text = export_program(
-        recipe, width, PARAMS, LIMITS, ExportOptions(dialect=Dialect.SINUMERIK)
-    )
+    text = export_program(recipe, width, PARAMS, LIMITS, ExportOptions(dialect=Dialect.SINUMERIK))
     lines = text.splitlines()
     assert all(line.startswith("; ") for line in lines[:5])
     assert "G17 G71 G90 G94 G40 G500 G64" in lines
