@@ -6,7 +6,9 @@ from the barrel), `profile` (the cubic and the side profile), `segments` / `poly
 lines and arcs, chord splitting), `toolpath` (machine coordinates of both sides), `travel`
 (the tool path against the axis travel), `stave_cut` (all of these composed: recipe and
 measured width to a checked tool path), `outline` (what a plan view draws), `compare` (edge
-error of a path, for the benchmark). Its command
+error of a path, for the benchmark), `profile_kinds` / `curved_profile` / `biarc` / `nurbs` /
+`drawn_profile` (side profiles of any shape: curve families and drawings, fitted as tangent
+lines and arcs). Its command
 line, `stave solve`, lives in `app.cli.solve`.
 """
 

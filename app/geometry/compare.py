@@ -33,19 +33,7 @@ class EdgeDeviation:
 
 def profile_edge(profile: StaveProfile, side: str) -> tuple[Segment, ...]:
     """The stave's edge itself (profile frame) as segments, in cut order."""
-    if side not in SIDE_SIGN:
-        raise ValueError(f"side must be 'A' or 'B', got {side!r}")
-    p = profile.points
-    names = ("P1", "P2", "P3", "P4") if side == "A" else ("P5", "P6", "P7", "P8")
-    first, second, third, fourth = (p[name] for name in names)
-    centre = profile.arc_center_a if side == "A" else profile.arc_center_b
-    pieces: list[Segment] = []
-    if first != second:
-        pieces.append(LineSegment(first, second, 0.0, 0.0, False, side))
-    pieces.append(ArcSegment(second, third, centre, True, 0.0, 0.0, False, side))
-    if third != fourth:
-        pieces.append(LineSegment(third, fourth, 0.0, 0.0, False, side))
-    return tuple(pieces)
+    return profile.edge(side)
 
 
 def tool_centre_path(toolpath: ToolPath, side: str) -> tuple[Segment, ...]:

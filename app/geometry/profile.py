@@ -37,6 +37,7 @@ from dataclasses import dataclass
 
 from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits, validate_stave
+from app.geometry.segments import ArcSegment, LineSegment, Segment
 
 ROOT_TOLERANCE_MM = 1e-10
 """Certified bound on |D - exact root| (the product promises below 1e-9 mm)."""
@@ -83,6 +84,26 @@ class StaveProfile:
     def head_width_mm(self) -> float:
         """W1, the width at both heads."""
         return self.W1
+
+    def edge(self, side: str) -> tuple[Segment, ...]:
+        """The stave's edge itself (profile frame) as segments, in cut order.
+
+        Side A runs P1 -> P4 (left to right), side B P5 -> P8 (right to left); a straight
+        section of zero length (lambda = 0) is left out.
+        """
+        if side not in ("A", "B"):
+            raise ValueError(f"side must be 'A' or 'B', got {side!r}")
+        p = self.points
+        names = ("P1", "P2", "P3", "P4") if side == "A" else ("P5", "P6", "P7", "P8")
+        first, second, third, fourth = (p[name] for name in names)
+        centre = self.arc_center_a if side == "A" else self.arc_center_b
+        pieces: list[Segment] = []
+        if first != second:
+            pieces.append(LineSegment(first, second, 0.0, 0.0, False, side))
+        pieces.append(ArcSegment(second, third, centre, True, 0.0, 0.0, False, side))
+        if third != fourth:
+            pieces.append(LineSegment(third, fourth, 0.0, 0.0, False, side))
+        return tuple(pieces)
 
 
 def cubic_f(A: float, B: float, C: float, D: float) -> float:
