@@ -19,6 +19,10 @@ from app import __version__
 # subcommand -> (module with add_arguments(parser) and run(args) -> int, one-line help)
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "solve": ("app.cli.solve", "compute a stave's profile and tool path"),
+    "barrel": (
+        "app.cli.barrel",
+        "place staves around a round or oval barrel",
+    ),
     "simulate": ("app.cli.simulate", "run automatic cycles on the simulated machine"),
     "probe": ("app.cli.probe", "connect to the configured hardware and show its state"),
     "db": ("app.cli.db", "recipes import/export, production export, backup and restore"),

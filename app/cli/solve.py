@@ -24,12 +24,19 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING, NoReturn
+from typing import TYPE_CHECKING
 
+from app.cli.console import (
+    EXIT_INVALID_INPUT,
+    EXIT_OK,
+    CliInputError,
+    OneLineParser,
+    emit,
+    run_parsed,
+)
 from app.geometry.bevel import FixedTilt
 from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits, validate_stave
@@ -40,9 +47,6 @@ from app.geometry.toolpath import ArcSegment, ToolPath
 
 if TYPE_CHECKING:
     from app.config import MachineConfig
-
-EXIT_OK = 0
-EXIT_INVALID_INPUT = 2
 
 # Defaults when neither a flag nor the config gives a value. They describe a typical
 # jointer: an 80 mm diameter cutter, the tilt pivot 250 mm above the table, the stave's left
@@ -67,10 +71,6 @@ _AXIS_KEYS = (
     ("Y", "y_min_mm", "y_max_mm", "home_y_mm"),
     ("Z", "z_min_deg", "z_max_deg", "home_z_deg"),
 )
-
-
-class CliInputError(Exception):
-    """Invalid command-line input that is not a geometry rule (bad number, bad config file)."""
 
 
 @dataclass(frozen=True)
@@ -292,33 +292,14 @@ def run(args: argparse.Namespace) -> int:
         print(f"stave solve: {exc}", file=sys.stderr)
         return EXIT_INVALID_INPUT
     if args.json:
-        _emit(json.dumps(to_json_object(profile, toolpath)))
+        emit(json.dumps(to_json_object(profile, toolpath)))
     else:
-        _emit(format_report(profile, toolpath, ratios))
+        emit(format_report(profile, toolpath, ratios))
     return EXIT_OK
 
 
-def _emit(text: str) -> None:
-    """Print to stdout; a reader that went away (`stave solve | head`) is not an error."""
-    try:
-        print(text)
-        sys.stdout.flush()
-    except BrokenPipeError:
-        # Point stdout at /dev/null so the interpreter's final flush does not fail again.
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-        os.close(devnull)
-
-
-class _OneLineParser(argparse.ArgumentParser):
-    """argparse, but a usage error is one line on stderr (exit 2), like every other error."""
-
-    def error(self, message: str) -> NoReturn:
-        self.exit(EXIT_INVALID_INPUT, f"{self.prog}: {message}\n")
-
-
 def build_parser() -> argparse.ArgumentParser:
-    parser = _OneLineParser(
+    parser = OneLineParser(
         prog="stave solve", description="Solve the stave profile and its tool path."
     )
     add_arguments(parser)
@@ -327,12 +308,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Standalone entry point; returns the exit code instead of exiting."""
-    parser = build_parser()
-    try:
-        args = parser.parse_args(argv)
-    except SystemExit as exc:
-        return exc.code if isinstance(exc.code, int) else EXIT_INVALID_INPUT
-    return run(args)
+    return run_parsed(build_parser(), run, argv)
 
 
 if __name__ == "__main__":

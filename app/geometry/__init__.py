@@ -1,15 +1,15 @@
 """Pure geometry of the stave jointer: profile solver, limits, tool path (no Qt, no I/O).
 
-Modules: `ratio` (exact fractions as coopers give them), `errors` (typed field errors),
-`limits` (machine limits and validation), `bevel` / `barrel` (the bevel of each side, fixed or
-from the barrel), `profile` (the cubic and the side profile), `segments` / `polyline` (exact
-lines and arcs, chord splitting), `toolpath` (machine coordinates of both sides), `travel`
-(the tool path against the axis travel), `stave_cut` (all of these composed: recipe and
-measured width to a checked tool path), `outline` (what a plan view draws), `compare` (edge
-error of a path, for the benchmark), `profile_kinds` / `curved_profile` / `biarc` / `nurbs` /
-`drawn_profile` (side profiles of any shape: curve families and drawings, fitted as tangent
-lines and arcs). Its command
-line, `stave solve`, lives in `app.cli.solve`.
+Modules: `ratio` (exact fractions as coopers give them), `errors` (typed field errors), `limits`
+(machine limits and validation), `bevel` / `barrel` (the bevel of each side, fixed or from the
+barrel), `barrel_section` (staves placed around a round or oval barrel, their two bevels, the
+closing stave), `profile` (the cubic and the side profile), `segments` / `polyline` (exact lines and
+arcs, chord splitting), `toolpath` (machine coordinates of both sides), `travel` (the tool path
+against the axis travel), `stave_cut` (all of these composed: recipe and measured width to a checked
+tool path), `outline` (what a plan view draws), `compare` (edge error of a path, for the benchmark),
+`profile_kinds` / `curved_profile` / `biarc` / `nurbs` / `drawn_profile` (side profiles of any
+shape: curve families and drawings, fitted as tangent lines and arcs). Its command line, `stave
+solve`, lives in `app.cli.solve`.
 """
 
 from app.geometry.bevel import FixedTilt, SideTilts, TiltRule
