@@ -40,9 +40,22 @@ class Dialect(Enum):
     SINUMERIK = "sinumerik"
 
 
-class ExportKind(Enum):
-    PROGRAM = "program"
-    DRAWING = "drawing"  # DXF
+class ExportFormat(Enum):
+    """What the Recipes screen offers to write: a program for one width, the parametric
+    program, or the drawing."""
+
+    LINUXCNC = "linuxcnc"
+    LINUXCNC_PARAMETRIC = "linuxcnc_parametric"
+    SINUMERIK = "sinumerik"
+    DXF = "dxf"
+
+    @property
+    def suffix(self) -> str:
+        return {"sinumerik": ".mpf", "dxf": ".dxf"}.get(self.value, ".ngc")
+
+    @property
+    def parametric(self) -> bool:
+        return self is ExportFormat.LINUXCNC_PARAMETRIC
 
 
 @dataclass(frozen=True)
@@ -208,3 +221,27 @@ def export_drawing(
     toolpath = stave_toolpath(recipe, width_mm, params, limits)
     info = program_info(recipe, width_mm, params, ExportOptions(), written_at)
     return dxf.drawing_text(toolpath, info)
+
+
+def export_text(
+    recipe: Recipe,
+    export_format: ExportFormat,
+    width_mm: float,
+    params: Mapping[str, float],
+    limits: StaveLimits,
+) -> str:
+    """The file's content for one of the screen's formats (the width is ignored by the
+    parametric program); GeometryError for a board the machine refuses."""
+    if export_format is ExportFormat.DXF:
+        return export_drawing(recipe, width_mm, params, limits)
+    dialect = Dialect.SINUMERIK if export_format is ExportFormat.SINUMERIK else Dialect.LINUXCNC
+    width = None if export_format.parametric else width_mm
+    return export_program(recipe, width, params, limits, ExportOptions(dialect=dialect))
+
+
+def export_file_name(recipe: Recipe, export_format: ExportFormat, width_mm: float) -> str:
+    """A file name that says what the file holds and that every file system takes."""
+    stem = "".join(ch if ch.isascii() and ch.isalnum() else "-" for ch in recipe.name)
+    stem = "-".join(part for part in stem.split("-") if part) or "stave"
+    board = "parametric" if export_format.parametric else f"{width_mm:g}mm"
+    return f"{stem}-{board}{export_format.suffix}"

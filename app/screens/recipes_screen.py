@@ -40,13 +40,14 @@ from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
 from app.geometry.ratio import Ratio
 from app.machine.commands import SelectRecipe
+from app.machine.program_export import ExportFormat, export_file_name, export_text
 from app.machine.snapshot import MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number, format_optional
 from app.screens.recipe_preview import RecipePreview, preview_recipe
 from app.screens.theme import set_style_property
 from app.screens.widgets.buttons import touch_button
-from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
+from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad
@@ -243,6 +244,8 @@ class RecipesScreen(Screen):
         self.width_button = touch_button("previewWidth", "field")
         self.width_button.clicked.connect(self.edit_preview_width)
         self.width_caption = styled_label("", "caption")
+        self.program_button = touch_button("exportProgram")
+        self.program_button.clicked.connect(self.export_program)
         self.plan_view = PlanView(show_cutter=False)
         self.plan_view.setMinimumSize(220, 150)
         self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
@@ -267,6 +270,7 @@ class RecipesScreen(Screen):
         preview_layout.addWidget(self.plan_view, 1)
         preview_layout.addLayout(results)
         preview_layout.addWidget(self.preview_errors)
+        preview_layout.addWidget(self.program_button)
 
         layout = QHBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
@@ -344,6 +348,7 @@ class RecipesScreen(Screen):
         self.barrel_button.setText(self.tr("Barrel"))
         self.preview_title.setText(self.tr("Preview"))
         self.width_caption.setText(self.tr("Board width for the preview"))
+        self.program_button.setText(self.tr("G-code, DXF…"))
         captions = {
             "head": self.tr("Head W1"),
             "d": self.tr("Rise D"),
@@ -791,6 +796,54 @@ class RecipesScreen(Screen):
         self.context.notify(
             self.tr("%1 recipes written to %2.").replace("%1", str(count)).replace("%2", str(path))
         )
+
+    def export_program(self, directory: Path | None = None) -> None:
+        """The saved recipe's program (for the preview's width, or parametric) or drawing,
+        written where the operator chooses (a USB stick, a folder)."""
+        recipe = self.current
+        if recipe is None or self.dirty:
+            self._message(
+                self.tr("Nothing to export"),
+                self.tr("Select a saved recipe (save the changes first)."),
+            )
+            return
+        width = self.preview_width_mm
+        width_text = f"{format_number(width, 1)} mm"
+        choices = [
+            (self.tr("LinuxCNC program, %1").replace("%1", width_text), ExportFormat.LINUXCNC),
+            (self.tr("LinuxCNC, parametric (every width)"), ExportFormat.LINUXCNC_PARAMETRIC),
+            (self.tr("SINUMERIK program, %1").replace("%1", width_text), ExportFormat.SINUMERIK),
+            (self.tr("DXF drawing, %1").replace("%1", width_text), ExportFormat.DXF),
+        ]
+        overlay = ChoiceOverlay(self.tr("Program for another control"), choices)
+        overlay.chosen.connect(lambda chosen: self._export_as(recipe, chosen, width, directory))
+        self.context.open(overlay)
+
+    def _export_as(
+        self, recipe: Recipe, export_format: ExportFormat, width_mm: float, directory: Path | None
+    ) -> None:
+        try:
+            text = export_text(recipe, export_format, width_mm, self.parameters, self.limits)
+        except ValueError as exc:  # the machine would refuse this board: say why
+            self._message(self.tr("Not exported"), str(exc))
+            return
+        chooser = FileChooser(
+            self.tr("Write the program"),
+            directory or default_exchange_dir(),
+            save_name=export_file_name(recipe, export_format, width_mm),
+            keyboard_layout=self.context.keyboard_layout(),
+            suffixes=(export_format.suffix,),
+        )
+        chooser.fileChosen.connect(lambda path: self._write_program(Path(path), text))
+        self.context.open(chooser)
+
+    def _write_program(self, path: Path, text: str) -> None:
+        try:
+            path.write_text(text, encoding="utf-8")
+        except OSError as exc:
+            self._message(self.tr("Export failed"), f"{path}: {exc.strerror}")
+            return
+        self.context.notify(self.tr("Written to %1.").replace("%1", str(path)))
 
     # -- machine ------------------------------------------------------------------------------
 

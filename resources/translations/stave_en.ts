@@ -314,7 +314,7 @@
 <context>
     <name>FileChooser</name>
     <message>
-        <location filename="../../app/screens/widgets/file_chooser.py" line="+81" />
+        <location filename="../../app/screens/widgets/file_chooser.py" line="+85" />
         <source>▲ Up</source>
         <translation>▲ Up</translation>
     </message>
@@ -350,11 +350,16 @@
     </message>
     <message>
         <location line="+2" />
-        <source>The file name must end in .json or .csv.</source>
-        <translation>The file name must end in .json or .csv.</translation>
+        <source>The file name must end in %1.</source>
+        <translation>The file name must end in %1.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+1" />
+        <source> or </source>
+        <translation> or </translation>
+    </message>
+    <message>
+        <location line="+12" />
         <source>Choose a file first.</source>
         <translation>Choose a file first.</translation>
     </message>
@@ -781,7 +786,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+214" />
+        <location filename="../../app/screens/manual_screen.py" line="+215" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -1116,7 +1121,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+283" />
+        <location filename="../../app/screens/recipes_screen.py" line="+287" />
         <location line="+51" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -1148,12 +1153,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+59" />
+        <location line="+60" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-58" />
+        <location line="-59" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
@@ -1214,18 +1219,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+385" />
+        <location line="+386" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-384" />
-        <location line="+434" />
+        <location line="-385" />
+        <location line="+435" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-433" />
+        <location line="-434" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1236,12 +1241,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+89" />
+        <location line="+90" />
         <source>Discard</source>
         <translation>Discard</translation>
     </message>
     <message>
-        <location line="-88" />
+        <location line="-89" />
         <source>Use on machine</source>
         <translation>Use on machine</translation>
     </message>
@@ -1262,12 +1267,17 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+239" />
+        <location line="+240" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-237" />
+        <location line="-239" />
+        <source>G-code, DXF…</source>
+        <translation>G-code, DXF…</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Head W1</source>
         <translation>Head W1</translation>
     </message>
@@ -1415,13 +1425,64 @@ shift</translation>
     </message>
     <message>
         <location line="+12" />
+        <location line="+50" />
         <source>Export failed</source>
         <translation>Export failed</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-47" />
         <source>%1 recipes written to %2.</source>
         <translation>%1 recipes written to %2.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Nothing to export</source>
+        <translation>Nothing to export</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Select a saved recipe (save the changes first).</source>
+        <translation>Select a saved recipe (save the changes first).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>LinuxCNC program, %1</source>
+        <translation>LinuxCNC program, %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>LinuxCNC, parametric (every width)</source>
+        <translation>LinuxCNC, parametric (every width)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SINUMERIK program, %1</source>
+        <translation>SINUMERIK program, %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>DXF drawing, %1</source>
+        <translation>DXF drawing, %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Program for another control</source>
+        <translation>Program for another control</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Not exported</source>
+        <translation>Not exported</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Write the program</source>
+        <translation>Write the program</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Written to %1.</source>
+        <translation>Written to %1.</translation>
     </message>
 </context>
 <context>

@@ -314,7 +314,7 @@
 <context>
     <name>FileChooser</name>
     <message>
-        <location filename="../../app/screens/widgets/file_chooser.py" line="+81"/>
+        <location filename="../../app/screens/widgets/file_chooser.py" line="+85"/>
         <source>▲ Up</source>
         <translation>▲ Gor</translation>
     </message>
@@ -350,11 +350,16 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>The file name must end in .json or .csv.</source>
-        <translation>Ime datoteke se mora končati s .json ali .csv.</translation>
+        <source>The file name must end in %1.</source>
+        <translation>Ime datoteke se mora končati s %1.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+1"/>
+        <source> or </source>
+        <translation> ali </translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Choose a file first.</source>
         <translation>Najprej izberite datoteko.</translation>
     </message>
@@ -781,7 +786,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+214"/>
+        <location filename="../../app/screens/manual_screen.py" line="+215"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -1116,7 +1121,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+283"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+287"/>
         <location line="+51"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
@@ -1148,12 +1153,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="-59"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
@@ -1214,18 +1219,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+385"/>
+        <location line="+386"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-384"/>
-        <location line="+434"/>
+        <location line="-385"/>
+        <location line="+435"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-433"/>
+        <location line="-434"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1236,12 +1241,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-89"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
@@ -1262,12 +1267,17 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+239"/>
+        <location line="+240"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-237"/>
+        <location line="-239"/>
+        <source>G-code, DXF…</source>
+        <translation>G-koda, DXF…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Head W1</source>
         <translation>Glava W1</translation>
     </message>
@@ -1415,13 +1425,64 @@ izmena</translation>
     </message>
     <message>
         <location line="+12"/>
+        <location line="+50"/>
         <source>Export failed</source>
         <translation>Izvoz ni uspel</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-47"/>
         <source>%1 recipes written to %2.</source>
         <translation>Število receptov, zapisanih v %2: %1.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Nothing to export</source>
+        <translation>Ni česa izvoziti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Select a saved recipe (save the changes first).</source>
+        <translation>Izberite shranjen recept (najprej shranite spremembe).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>LinuxCNC program, %1</source>
+        <translation>Program LinuxCNC, %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>LinuxCNC, parametric (every width)</source>
+        <translation>LinuxCNC, parametrični (vse širine)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SINUMERIK program, %1</source>
+        <translation>Program SINUMERIK, %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DXF drawing, %1</source>
+        <translation>Risba DXF, %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Program for another control</source>
+        <translation>Program za drug krmilnik</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not exported</source>
+        <translation>Ni izvoženo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Write the program</source>
+        <translation>Zapiši program</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Written to %1.</source>
+        <translation>Zapisano v %1.</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
-"""A touch file chooser for recipe import and export (USB stick, network share, home).
+"""A touch file chooser for recipe import and export and the programs for other controls
+(USB stick, network share, home).
 
 Why not QFileDialog: its rows are too small for a finger and it opens as a separate window,
 which a frameless kiosk cannot manage. This one shows one directory at a time in big rows,
@@ -51,7 +52,8 @@ def default_exchange_dir() -> Path:
 
 
 class FileChooser(Overlay):
-    """Pick a recipe file (``save_name`` None) or a place and name to write one.
+    """Pick a file (``save_name`` None) or a place and name to write one; ``suffixes`` are
+    the file types shown and allowed (recipe files by default).
 
     ``fileChosen(str)`` carries the full path."""
 
@@ -64,10 +66,12 @@ class FileChooser(Overlay):
         *,
         save_name: str | None = None,
         keyboard_layout: str = "qwerty",
+        suffixes: tuple[str, ...] = SUFFIXES,
         parent: QWidget | None = None,
     ) -> None:
         super().__init__(parent)
         self.setObjectName("fileChooser")
+        self.suffixes = tuple(suffix.lower() for suffix in suffixes)
         self.directory = start_dir if start_dir.is_dir() else Path.home()
         self.save_name = save_name
         self.selected: Path | None = None
@@ -143,7 +147,7 @@ class FileChooser(Overlay):
                 continue
             if child.is_dir():
                 item = QListWidgetItem(f"▸ {child.name}/")
-            elif child.suffix.lower() in SUFFIXES:
+            elif child.suffix.lower() in self.suffixes:
                 item = QListWidgetItem(f"   {child.name}")
             else:
                 continue
@@ -184,8 +188,10 @@ class FileChooser(Overlay):
     def _check_name(self, name: str) -> str:
         if "/" in name or name in (".", ".."):
             return self.tr("A file name cannot contain '/'.")
-        if Path(name).suffix.lower() not in SUFFIXES:
-            return self.tr("The file name must end in .json or .csv.")
+        if Path(name).suffix.lower() not in self.suffixes:
+            return self.tr("The file name must end in %1.").replace(
+                "%1", self.tr(" or ").join(self.suffixes)
+            )
         return ""
 
     def chosen_path(self) -> Path | None:
