@@ -10,13 +10,15 @@ the report lists the others); 2 bad input (one line on stderr naming what and wh
 from __future__ import annotations
 
 import argparse
+import getpass
 import os
 import sys
 from collections.abc import Sequence
 from datetime import UTC, date, datetime, tzinfo
 from pathlib import Path
 
-from app.data.backup import backup_database, restore_database
+from app.cli.pin_input import PinMissing, read_pin
+from app.data.backup import backup_database, restore_database, service_pin_check
 from app.data.database import Database
 from app.data.errors import DataError
 from app.data.exchange import (
@@ -31,7 +33,6 @@ from app.data.paths import default_database_path
 from app.data.recipe import TiltMode
 from app.geometry.errors import format_value
 
-PIN_ENV = "STAVE_PIN"
 LIST_CHOICES = ("recipes", "parameters", "users")
 
 
@@ -55,10 +56,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "import", parents=[common], help="import recipes from a .json or .csv file"
     )
     p.add_argument("file", type=Path, metavar="FILE")
-    p.add_argument(
-        "--pin",
-        help=f"PIN of a technician or service user (or set ${PIN_ENV}); recorded in the history",
-    )
 
     p = actions.add_parser("export", parents=[common], help="export all recipes (.json or .csv)")
     p.add_argument("file", type=Path, metavar="FILE")
@@ -84,9 +81,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p = actions.add_parser(
         "restore",
         parents=[common],
-        help="replace the database by a backup (the current one is kept as a copy)",
+        help="replace the database by a checked backup (service PIN; the current one is kept)",
     )
     p.add_argument("backup", type=Path, metavar="BACKUP")
+    p.add_argument(
+        "--with-users",
+        action="store_true",
+        help="bring back the backup's users and PINs too (default: keep the current ones)",
+    )
+
+    actions.add_parser(
+        "unlock-pins",
+        parents=[common],
+        help="end a PIN lockout (for the machine's own account, which owns the database file)",
+    )
 
     p = actions.add_parser("list", parents=[common], help="print recipes, parameters or users")
     p.add_argument("what", nargs="?", choices=LIST_CHOICES, default="recipes")
@@ -116,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
     except BrokenPipeError:  # output piped into `head`: not an error of ours
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - keeps Python's exit flush quiet
         return 0
-    except (UsageError, DataError, ValueError, OSError) as exc:
+    except (UsageError, PinMissing, DataError, ValueError, OSError) as exc:
         message = str(exc).replace("\n", "; ")
         print(f"stave db {action}: {message}", file=sys.stderr)
         return 2
@@ -137,15 +145,13 @@ def _open_existing(args: argparse.Namespace) -> Database:
 
 
 def _import(args: argparse.Namespace) -> int:
-    pin = args.pin if args.pin is not None else os.environ.get(PIN_ENV)
-    if not pin:
-        raise UsageError(f"--pin: importing needs the PIN of a technician (or set ${PIN_ENV})")
     if not args.file.is_file():
         raise UsageError(f"{args.file}: file not found")
+    pin = read_pin("importing needs the PIN of a technician")
     with Database.open(_db_path(args)) as db:
         user = db.authenticate(pin)
         if user is None:
-            raise UsageError("--pin: this PIN belongs to no user")
+            raise UsageError("pin: this PIN belongs to no user")
         report = import_recipes(db, args.file, user)
     for line in report.lines():
         print(line)
@@ -201,7 +207,12 @@ def _backup(args: argparse.Namespace) -> int:
 
 
 def _restore(args: argparse.Namespace) -> int:
-    report = restore_database(args.backup, _db_path(args))
+    path = _db_path(args)
+
+    def authorize(current: Database) -> None:  # asked only once the backup passed its checks
+        service_pin_check(read_pin("restoring needs the PIN of a service user"))(current)
+
+    report = restore_database(args.backup, path, authorize=authorize, restore_users=args.with_users)
     info = report.restored
     print(
         f"restored {info.path} (schema version {info.schema_version}, {info.recipes} recipes, "
@@ -209,6 +220,16 @@ def _restore(args: argparse.Namespace) -> int:
     )
     if report.previous_copy is not None:
         print(f"the previous database is kept as {report.previous_copy}")
+    return 0
+
+
+def _unlock_pins(args: argparse.Namespace) -> int:
+    """Whoever may write the database file (0600, the machine's account) could change any
+    value in it anyway; so this needs no PIN, which the lockout would refuse."""
+    with _open_existing(args) as db:
+        was = db.pin_guard_state()
+        db.reset_pin_guard(by=f"the command line ({getpass.getuser()})")
+    print(f"PIN entry unlocked ({was.failures} wrong PINs in a row before)")
     return 0
 
 
@@ -244,6 +265,7 @@ _ACTIONS = {
     "backup": _backup,
     "restore": _restore,
     "list": _list,
+    "unlock-pins": _unlock_pins,
 }
 
 

@@ -27,8 +27,10 @@ simulations run on simulated time.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
+import os
 import sqlite3
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -43,12 +45,14 @@ from app.data.errors import (
     NotFoundError,
     ParameterError,
     PermissionDeniedError,
+    PinEntryRefused,
     PinError,
     RecipeValidationError,
     RecordError,
     SchemaVersionError,
     StorageError,
 )
+from app.data.files import create_private_file, ensure_private_directory
 from app.data.parameters import (
     DEFAULT_PARAMETERS,
     PARAMETER_BY_NAME,
@@ -59,6 +63,17 @@ from app.data.parameters import (
     unknown_parameter,
 )
 from app.data.paths import default_database_path
+from app.data.pin_guard import (
+    LOCKOUT_ALARM_CODE,
+    LOCKOUT_ALARM_SOURCE,
+    LOCKOUT_ALARM_TEXT,
+    LOCKOUT_FAILURES,
+    PinGuardState,
+    after_claim,
+    after_wrong,
+    refusal_text,
+    wait_s,
+)
 from app.data.recipe import Recipe, TiltMode, recipe_to_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.records import (
@@ -174,6 +189,14 @@ def _recipe_json(recipe: Recipe) -> str:
     return json.dumps({"id": recipe.id, **recipe_to_mapping(recipe)}, ensure_ascii=False)
 
 
+def _create_private(path: Path) -> None:
+    """A new database file is created 0600 (SQLite gives its -wal and -shm the same mode)."""
+    if path.exists():
+        return
+    with contextlib.suppress(FileExistsError):  # another process made it meanwhile: fine
+        os.close(create_private_file(path))
+
+
 def _same_content(a: Recipe, b: Recipe) -> bool:
     return replace(a, id=None) == replace(b, id=None)
 
@@ -218,7 +241,8 @@ class Database:
         """
         db_path = Path(path)
         try:
-            db_path.parent.mkdir(parents=True, exist_ok=True)
+            ensure_private_directory(db_path.parent)
+            _create_private(db_path)
             connection = sqlite3.connect(db_path, timeout=busy_timeout_s, isolation_level=None)
         except (OSError, sqlite3.Error) as exc:
             raise DatabaseOpenError(f"{db_path}: cannot open the database ({exc})") from None
@@ -382,6 +406,42 @@ class Database:
             problems.append(f"foreign key: table {row[0]} row {row[1]} -> {row[2]}")
         return problems
 
+    def check_stored_parameters(self) -> None:
+        """ParameterError unless every stored parameter is known and within the catalogue and
+        its cross rules (restore runs this on a candidate)."""
+        errors: list[FieldError] = []
+        for row in self._conn.execute("SELECT name, value FROM parameters"):
+            name, value = str(row["name"]), row["value"]
+            if name not in PARAMETER_BY_NAME:
+                errors.append(unknown_parameter(name, value))
+                continue
+            error = check_parameter_value(PARAMETER_BY_NAME[name], value)
+            if error is not None:
+                errors.append(error)
+        errors.extend(check_parameter_set(self.get_parameters()) if not errors else [])
+        if errors:
+            raise ParameterError("parameters", errors)
+
+    def check_stored_records(self) -> None:
+        """RecordError unless every production record and alarm event passes its own checks."""
+        for row in self._conn.execute(f"SELECT {_PRODUCTION_COLUMNS} FROM production"):
+            problems = _production_from_row(row).problems()
+            if problems:
+                raise RecordError(f"production record {row['id']}: {problems[0]}")
+        for row in self._conn.execute(f"SELECT {_ALARM_COLUMNS} FROM alarm_events"):
+            problems = _alarm_from_row(row).problems()
+            if problems:
+                raise RecordError(f"alarm event {row['id']}: {problems[0]}")
+
+    def export_users(self) -> list[tuple[int, str, str, str, str]]:
+        """(id, name, role, PIN hash, updated_at) of every user: only for a restore that keeps
+        the current users. The hashes never leave the data layer otherwise."""
+        rows = self._conn.execute("SELECT id, name, role, pin_hash, updated_at FROM users")
+        return [
+            (int(r["id"]), str(r["name"]), str(r["role"]), str(r["pin_hash"]), str(r["updated_at"]))
+            for r in rows
+        ]
+
     # ------------------------------------------------------------------ users and roles
 
     def _stored_user(self, user: User) -> User:
@@ -407,16 +467,107 @@ class Database:
         return [User(int(r["id"]), str(r["name"]), Role.from_label(r["role"])) for r in rows]
 
     def authenticate(self, pin: str) -> User | None:
-        """The user whose PIN this is, or None (a malformed PIN is simply no match)."""
+        """The user whose PIN this is, or None (a malformed PIN is simply no match).
+
+        Raises PinEntryRefused, without looking at the PIN, while the wrong-PIN delay or the
+        lockout of :mod:`app.data.pin_guard` runs. The attempt is counted before the hashes
+        are checked (so parallel attempts cannot share one gap) and forgiven if it matches.
+        """
         try:
             check_pin_format(pin)
         except ValueError:
             return None
+        with self._write() as conn:
+            state = self._pin_guard(conn)
+            seconds, locked = wait_s(state, self._clock())
+            if seconds > 0:
+                raise PinEntryRefused(refusal_text(seconds, locked), seconds, locked)
+            self._store_pin_guard(conn, after_claim(state, self._clock()))
         rows = self._conn.execute("SELECT id, name, role, pin_hash FROM users ORDER BY id")
         for row in rows.fetchall():
             if verify_pin(pin, str(row["pin_hash"])):
-                return User(int(row["id"]), str(row["name"]), Role.from_label(row["role"]))
+                user = User(int(row["id"]), str(row["name"]), Role.from_label(row["role"]))
+                with self._write() as conn:
+                    self._store_pin_guard(conn, PinGuardState())
+                return user
+        with self._write() as conn:
+            now = self._clock()
+            state = self._pin_guard(conn)
+            wrong = after_wrong(state, now)
+            self._store_pin_guard(conn, wrong)
+            if wrong.locked_until != state.locked_until and wrong.locked_until is not None:
+                seconds = (wrong.locked_until - now).total_seconds()
+                _log.warning("%s", refusal_text(seconds, locked=True))
+                self._record_lockout_alarm(conn, AlarmState.NORMAL, AlarmState.ACTIVE_UNACKED)
         return None
+
+    def pin_guard_state(self) -> PinGuardState:
+        """The wrong-PIN counter and lockout as stored (for the screens and the tests)."""
+        return self._pin_guard(self._conn)
+
+    def unlock_pin_entry(self, by_user: User) -> None:
+        """End a lockout and reset the wrong-PIN counter (a logged-in service user)."""
+        actor = self.check_role(by_user, USER_ADMIN_ROLE, "unlocking PIN entry")
+        self.reset_pin_guard(actor.name)
+
+    def reset_pin_guard(self, by: str) -> None:
+        """End a lockout and reset the counter; ``by`` is logged with the alarm's return to
+        normal. For :meth:`unlock_pin_entry` and for the owner of the database file (who could
+        change anything in it anyway)."""
+        with self._write() as conn:
+            state = self._pin_guard(conn)
+            self._store_pin_guard(conn, PinGuardState())
+            if state.locked_until is not None:
+                self._record_lockout_alarm(conn, AlarmState.ACTIVE_UNACKED, AlarmState.NORMAL, by)
+        _log.warning("PIN entry unlocked by %s", by)
+
+    def _record_lockout_alarm(
+        self,
+        conn: sqlite3.Connection,
+        from_state: AlarmState,
+        to_state: AlarmState,
+        user_name: str | None = None,
+    ) -> None:
+        conn.execute(
+            "INSERT INTO alarm_events (time, code, text, source, from_state, to_state, "
+            "user_name) VALUES (?, ?, ?, ?, ?, ?, ?)",
+            (
+                self._now(),
+                LOCKOUT_ALARM_CODE,
+                f"{LOCKOUT_ALARM_TEXT} ({LOCKOUT_FAILURES})",
+                LOCKOUT_ALARM_SOURCE,
+                from_state.value,
+                to_state.value,
+                user_name,
+            ),
+        )
+
+    @staticmethod
+    def _pin_guard(conn: sqlite3.Connection) -> PinGuardState:
+        row = conn.execute(
+            "SELECT failures, last_failure_at, locked_until FROM pin_guard WHERE id = 1"
+        ).fetchone()
+        if row is None:
+            return PinGuardState()
+        last, until = row["last_failure_at"], row["locked_until"]
+        return PinGuardState(
+            int(row["failures"]),
+            None if last is None else parse_utc(last),
+            None if until is None else parse_utc(until),
+        )
+
+    @staticmethod
+    def _store_pin_guard(conn: sqlite3.Connection, state: PinGuardState) -> None:
+        conn.execute(
+            "INSERT INTO pin_guard (id, failures, last_failure_at, locked_until) "
+            "VALUES (1, ?, ?, ?) ON CONFLICT (id) DO UPDATE SET failures = excluded.failures, "
+            "last_failure_at = excluded.last_failure_at, locked_until = excluded.locked_until",
+            (
+                state.failures,
+                None if state.last_failure_at is None else format_utc(state.last_failure_at),
+                None if state.locked_until is None else format_utc(state.locked_until),
+            ),
+        )
 
     def _pin_taken(self, pin: str, except_user_id: int | None) -> bool:
         rows = self._conn.execute("SELECT id, pin_hash FROM users").fetchall()
@@ -503,12 +654,21 @@ class Database:
     @staticmethod
     def _id_of_name(conn: sqlite3.Connection, name: str) -> int | None:
         """Names compare with str.casefold ("PIÈCE" is "pièce"); SQLite's NOCASE knows ASCII
-        only, so the comparison is done here (a few hundred names at most)."""
-        wanted = name.strip().casefold()
-        for row in conn.execute("SELECT id, name FROM recipes"):
-            if str(row["name"]).casefold() == wanted:
-                return int(row["id"])
-        return None
+        only, so the comparison is done here."""
+        return Database._name_index(conn).get(name.strip().casefold())
+
+    @staticmethod
+    def _name_index(conn: sqlite3.Connection) -> dict[str, int]:
+        """Every stored name (casefolded) -> id, read once: a batch of thousands of recipes
+        checks its names in one pass instead of one table scan per recipe."""
+        return {
+            str(row["name"]).casefold(): int(row["id"])
+            for row in conn.execute("SELECT id, name FROM recipes")
+        }
+
+    def recipe_ids_by_name(self) -> dict[str, int]:
+        """Casefolded name -> id of every recipe (one read; for imports)."""
+        return self._name_index(self._conn)
 
     def save_recipe(self, recipe: Recipe, user: User) -> Recipe:
         """Insert (``id`` None) or update a recipe; returns it as stored, with its id.
@@ -528,8 +688,10 @@ class Database:
         with self._write() as conn:
             actor = self.check_role(user, RECIPE_EDIT_ROLE, "changing recipes")
             now = self._now()
+            names = self._name_index(conn)
+            key_of_id = {recipe_id: key for key, recipe_id in names.items()}
             for recipe in recipes:
-                clash = self._id_of_name(conn, recipe.name)
+                clash = names.get(recipe.name.strip().casefold())
                 if clash is not None and clash != recipe.id:
                     allowed = "a name no other recipe has"
                     message = (
@@ -539,9 +701,15 @@ class Database:
                     error = FieldError("name", recipe.name, allowed, message)
                     raise RecipeValidationError(f"recipe {recipe.name!r}", [error])
                 if recipe.id is None:
-                    saved.append(self._insert_recipe(conn, recipe, actor.name, now))
+                    stored = self._insert_recipe(conn, recipe, actor.name, now)
                 else:
-                    saved.append(self._update_recipe(conn, recipe, actor.name, now))
+                    stored = self._update_recipe(conn, recipe, actor.name, now)
+                    names.pop(key_of_id.get(int(stored.id or 0), ""), None)
+                stored_id = int(stored.id or 0)
+                key = stored.name.strip().casefold()
+                names[key] = stored_id
+                key_of_id[stored_id] = key
+                saved.append(stored)
         return saved
 
     def _insert_recipe(
@@ -774,17 +942,34 @@ class Database:
 
     # ------------------------------------------------------------------ production
 
-    def record_piece(self, record: ProductionRecord) -> ProductionRecord:
+    def record_piece(
+        self, record: ProductionRecord, *, skip_if_stored: bool = False
+    ) -> ProductionRecord:
         """Store one board's record; returns it as stored (id set, time in UTC).
 
         A recipe deleted meanwhile does not lose the count: the record keeps the recipe's
-        name and its recipe id becomes None.
+        name and its recipe id becomes None. ``skip_if_stored``: a record with the same time,
+        recipe name, result and cycle time is already there (a journalled write stored before
+        a crash), so nothing is added and that one is returned.
         """
         problems = record.problems()
         if problems:
             raise RecordError("production record not saved: " + "; ".join(problems))
         stored = replace(record, time=to_utc(record.time))
         with self._write() as conn:
+            if skip_if_stored:
+                row = conn.execute(
+                    f"SELECT {_PRODUCTION_COLUMNS} FROM production WHERE time = ? AND "
+                    "recipe_name = ? AND result = ? AND cycle_time_s = ?",
+                    (
+                        format_utc(stored.time),
+                        stored.recipe_name,
+                        stored.result.value,
+                        float(stored.cycle_time_s),
+                    ),
+                ).fetchone()
+                if row is not None:
+                    return _production_from_row(row)
             recipe_id: int | None = None
             if record.recipe_id is not None:
                 found = conn.execute(
@@ -829,13 +1014,31 @@ class Database:
 
     # ------------------------------------------------------------------ alarms
 
-    def record_alarm_event(self, event: AlarmEvent) -> AlarmEvent:
-        """Store one alarm state transition; returns it as stored (id set, time in UTC)."""
+    def record_alarm_event(self, event: AlarmEvent, *, skip_if_stored: bool = False) -> AlarmEvent:
+        """Store one alarm state transition; returns it as stored (id set, time in UTC).
+
+        ``skip_if_stored``: the same transition (time, code, source, states) is already there,
+        so nothing is added and that one is returned.
+        """
         problems = event.problems()
         if problems:
             raise RecordError("alarm event not saved: " + "; ".join(problems))
         stored = replace(event, time=to_utc(event.time))
         with self._write() as conn:
+            if skip_if_stored:
+                row = conn.execute(
+                    f"SELECT {_ALARM_COLUMNS} FROM alarm_events WHERE time = ? AND code = ? "
+                    "AND source = ? AND from_state = ? AND to_state = ?",
+                    (
+                        format_utc(stored.time),
+                        stored.code,
+                        stored.source,
+                        stored.from_state.value,
+                        stored.to_state.value,
+                    ),
+                ).fetchone()
+                if row is not None:
+                    return _alarm_from_row(row)
             cursor = conn.execute(
                 "INSERT INTO alarm_events (time, code, text, source, from_state, to_state, "
                 "user_name) VALUES (?, ?, ?, ?, ?, ?, ?)",

@@ -69,3 +69,16 @@ class RecipeFormatError(DataError, ValueError):
     def __init__(self, errors: Iterable[FieldError]) -> None:
         self.errors: tuple[FieldError, ...] = tuple(errors)
         super().__init__("; ".join(error.message for error in self.errors))
+
+
+class PinEntryRefused(PinError):
+    """PIN entry is throttled or locked: the PIN was not even looked at.
+
+    ``retry_after_s`` is how long until an attempt is looked at again; ``locked`` tells a
+    lockout (lifted by time or by a service user) from the growing delay.
+    """
+
+    def __init__(self, message: str, retry_after_s: float, locked: bool) -> None:
+        super().__init__(message)
+        self.retry_after_s = retry_after_s
+        self.locked = locked

@@ -4,8 +4,9 @@ Import is forgiving per row and strict per file: a file that cannot be read at a
 with one line (RecipeFileError), while within a readable file every row is judged on its own -
 the valid rows are stored, each invalid one is reported with its row number, the field, the
 value and what is allowed. A row whose name matches a stored recipe (letter case ignored)
-updates it, but only if the row is valid: an invalid row never damages what is stored. All
-accepted rows are written in one transaction.
+updates it, but only if the row is valid: an invalid row never damages what is stored. The
+accepted rows are written in batches, each its own short transaction, so that an import of
+tens of thousands of recipes never keeps the machine's records waiting for the write lock.
 
 Production exports are CSV with one line per board, times in the site's local time with their
 UTC offset (or in the zone given), for a day, a shift or any range.
@@ -21,8 +22,9 @@ from dataclasses import dataclass, replace
 from datetime import date, datetime, tzinfo
 from pathlib import Path
 
+from app.data.csv_cells import to_csv_text
 from app.data.database import RECIPE_IMPORT_ROLE, Database
-from app.data.errors import RecipeFormatError
+from app.data.errors import RecipeFormatError, StorageError
 from app.data.files import atomic_write_text
 from app.data.recipe import Recipe, recipe_from_mapping
 from app.data.recipe_files import read_recipe_rows, write_recipe_file
@@ -31,6 +33,10 @@ from app.data.shifts import ShiftPlan, day_window, shift_window
 from app.data.users import User
 from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
+
+
+class ImportInterrupted(StorageError):
+    """An import stopped part way; the message says how much of it was committed."""
 
 
 @dataclass(frozen=True)
@@ -113,30 +119,51 @@ def read_recipes(
     return valid, rejected
 
 
-def import_recipes(db: Database, path: Path, user: User) -> ImportReport:
+IMPORT_BATCH_SIZE = 200
+"""Recipes per import transaction: each holds SQLite's write lock for a few tens of
+milliseconds, so the machine's records slip in between the batches of even a huge file."""
+
+
+def import_recipes(
+    db: Database, path: Path, user: User, batch_size: int = IMPORT_BATCH_SIZE
+) -> ImportReport:
     """Import a .json or .csv recipe file into ``db`` as ``user`` (needs RECIPE_IMPORT_ROLE).
 
-    Valid rows are stored in one transaction (new names created, existing names updated);
-    invalid rows are reported and change nothing.
+    Valid rows are stored in batches of ``batch_size``, each its own transaction (new names
+    created, existing names updated); invalid rows are reported and change nothing. If a
+    batch cannot be stored (StorageError: the disk, or the lock held too long by another
+    writer), the batches before it stay stored and the error names what was committed.
     """
     db.check_role(user, RECIPE_IMPORT_ROLE, "importing recipes")
     valid, rejected = read_recipes(path, db.limits)
+    ids_by_name = db.recipe_ids_by_name()
     created: list[str] = []
     updated: list[str] = []
     unchanged: list[str] = []
-    to_save: list[Recipe] = []
+    to_save: list[tuple[Recipe, list[str]]] = []
     for _, recipe in valid:
-        existing = db.get_recipe_by_name(recipe.name)
-        if existing is None:
-            to_save.append(recipe)
-            created.append(recipe.name)
-        elif replace(recipe, id=existing.id) == existing:
+        existing_id = ids_by_name.get(recipe.name.strip().casefold())
+        if existing_id is None:
+            to_save.append((recipe, created))
+            continue
+        existing = db.get_recipe(existing_id)
+        if replace(recipe, id=existing.id) == existing:
             unchanged.append(recipe.name)
         else:
-            to_save.append(replace(recipe, id=existing.id))
-            updated.append(recipe.name)
-    if to_save:
-        db.save_recipes(to_save, user)
+            to_save.append((replace(recipe, id=existing.id), updated))
+    stored = 0
+    for first in range(0, len(to_save), max(1, batch_size)):
+        batch = to_save[first : first + max(1, batch_size)]
+        try:
+            db.save_recipes([recipe for recipe, _ in batch], user)
+        except StorageError as exc:
+            raise ImportInterrupted(
+                f"{path.name}: {stored} of {len(to_save)} recipes to store were committed "
+                f"(in {first // max(1, batch_size)} transactions) before the import stopped: {exc}"
+            ) from exc
+        for recipe, outcome in batch:
+            outcome.append(recipe.name)
+        stored += len(batch)
     return ImportReport(path, tuple(created), tuple(updated), tuple(unchanged), tuple(rejected))
 
 
@@ -181,14 +208,14 @@ def production_to_csv(records: Sequence[ProductionRecord], tz: tzinfo | None = N
                 _cell(record.id, 0),
                 record.time.astimezone(tz).isoformat(timespec="seconds"),
                 _cell(record.recipe_id, 0),
-                record.recipe_name,
+                to_csv_text(record.recipe_name),
                 record.result.value,
                 _cell(record.width_mm, 2),
                 _cell(record.d_mm, 4),
                 _cell(record.r_mm, 2),
                 _cell(record.tilt_deg, 3),
                 _cell(record.cycle_time_s, 1),
-                record.alarm_code or "",
+                to_csv_text(record.alarm_code or ""),
             ]
         )
     return buffer.getvalue()

@@ -25,6 +25,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from app.data.csv_cells import from_csv_text, to_csv_text
 from app.data.errors import DataError, RecipeFormatError
 from app.data.files import atomic_write_text
 from app.data.recipe import IGNORED_KEYS, REQUIRED_KEYS, ROW_KEYS, Recipe, recipe_from_mapping
@@ -149,7 +150,10 @@ def _csv_rows(path: Path, text: str) -> list[RecipeRow]:
                 continue  # blank line
             values: dict[str, object] = {}
             for key, cell in zip(keys, cells, strict=False):
-                comma = delimiter != "," and key not in _TEXT_KEYS and _DECIMAL_COMMA.match(cell)
+                if key in _TEXT_KEYS:
+                    values[key] = from_csv_text(cell)
+                    continue
+                comma = delimiter != "," and _DECIMAL_COMMA.match(cell)
                 values[key] = cell.replace(",", ".") if comma else cell
             problems: tuple[FieldError, ...] = ()
             if len(cells) > len(keys):
@@ -208,7 +212,14 @@ def recipes_to_csv(recipes: Sequence[Recipe]) -> str:
     writer.writerow(ROW_KEYS)
     for recipe in recipes:
         mapping = _to_mapping(recipe)
-        writer.writerow([_csv_cell(mapping[key]) for key in ROW_KEYS])
+        writer.writerow(
+            [
+                to_csv_text(_csv_cell(mapping[key]))
+                if key in _TEXT_KEYS
+                else _csv_cell(mapping[key])
+                for key in ROW_KEYS
+            ]
+        )
     return buffer.getvalue()
 
 

@@ -143,13 +143,37 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CREATE INDEX recipe_changes_recipe ON recipe_changes (recipe_id, time)",
         ),
     ),
+    Migration(
+        3,
+        "wrong-PIN counter and lockout (one row, shared by the panel, the tools and the API)",
+        (
+            """
+            CREATE TABLE pin_guard (
+                id INTEGER PRIMARY KEY CHECK (id = 1),
+                failures INTEGER NOT NULL CHECK (failures >= 0),
+                last_failure_at TEXT,
+                locked_until TEXT
+            ) STRICT
+            """,
+            "INSERT INTO pin_guard (id, failures) VALUES (1, 0)",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version
 
 # Tables a database must have at SCHEMA_VERSION (restore checks a file against this).
 REQUIRED_TABLES = frozenset(
-    {"recipes", "users", "parameters", "parameter_changes", "production", "alarm_events"}
+    {
+        "recipes",
+        "users",
+        "parameters",
+        "parameter_changes",
+        "production",
+        "alarm_events",
+        "recipe_changes",
+        "pin_guard",
+    }
 )
 
 

@@ -61,6 +61,8 @@ CATALOGUE: dict[str, AlarmDefinition] = {
         AlarmDefinition("E090", "Internal error in the machine process", Severity.FAULT),
         AlarmDefinition("W101", "Jog stopped: no refresh from the screen", Severity.WARNING),
         AlarmDefinition("W102", "Device event", Severity.WARNING),
+        AlarmDefinition("W103", "Records waiting for the database", Severity.WARNING),
+        AlarmDefinition("W104", "PIN entry locked after repeated wrong PINs", Severity.WARNING),
     )
 }
 

@@ -57,7 +57,7 @@ from app.machine.states import (
     TransitionRefused,
     next_state,
 )
-from app.machine.store import MachineStore, PieceRecord
+from app.machine.store import RECORD_DELAY_ALARM_S, MachineStore, PieceRecord
 
 log = logging.getLogger(__name__)
 
@@ -525,12 +525,22 @@ class MachineController:
                 # alarms stay shown until acknowledged). E013 is an event, cleared by Reset.
                 for code in ("E010", "E011", "E012"):
                     self.alarms.clear(code, name)
+        self._supervise_records()
         if self.cycle is not None and self.cycle.moving:
             setpoint = {n: self.axes.command[n] for n in self.axes.names}
             for violation in check_feedback(self.axes.feedback, setpoint, self.config.axes):
                 self._fault(VIOLATION_ALARMS[violation.kind], violation.axis, violation.message)
             if not self.axes.all_homed():
                 self._fault("E016", "axes", "an axis lost its home position")
+
+    def _supervise_records(self) -> None:
+        """W103 while a record has waited too long for a busy or missing database (it is kept
+        in the journal meanwhile; the machine goes on)."""
+        waited_s = self.store.unstored_age_s()
+        if waited_s > RECORD_DELAY_ALARM_S:
+            self.alarms.raise_alarm("W103", "database", f"oldest waiting {waited_s:.0f} s")
+        elif waited_s == 0.0:
+            self.alarms.clear("W103", "database")
 
     def _check_reset(self) -> None:
         if self._reset_pending_since is None:

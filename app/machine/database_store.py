@@ -4,20 +4,40 @@ Two flavours: :class:`DatabaseStore` writes at once (tests, ``stave simulate``),
 :class:`ThreadedStore` hands writes to a writer thread with its own connection, because an
 SQLite commit with ``synchronous = FULL`` waits for the disk, and the machine loop must not.
 Reads (a recipe at Start, the parameters) stay synchronous: they happen while nothing moves.
+
+What the machine writes by itself (production records, alarm transitions, the factory values
+of an untuned database) is never dropped: each goes into the journal of
+:mod:`app.data.pending` first, and stays there, retried with a growing pause, until the
+database has taken it, across restarts. A busy database (an import, a backup) only delays the
+records; :meth:`DatabaseStore.unstored_age_s` tells the controller how long the oldest one
+has waited, and it raises an alarm (W103) when that grows beyond
+:data:`app.machine.store.RECORD_DELAY_ALARM_S`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import queue
 import threading
+import time
+from collections import deque
 from collections.abc import Callable
+from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
 
 from app.config import MachineConfig
 from app.data.database import Database
-from app.data.errors import DataError, NotFoundError
+from app.data.errors import DataError, NotFoundError, StorageError
+from app.data.pending import (
+    AlarmWrite,
+    PendingWrite,
+    PieceWrite,
+    SeedParametersWrite,
+    WriteJournal,
+    journal_path,
+)
 from app.data.recipe import Recipe
 from app.data.records import AlarmEvent, PieceResult, ProductionRecord
 from app.data.records import AlarmState as StoredAlarmState
@@ -68,22 +88,112 @@ def alarm_event(t: AlarmTransition) -> AlarmEvent:
     )
 
 
+RETRY_FIRST_S = 0.2
+RETRY_MAX_S = 5.0
+WRITER_BUSY_TIMEOUT_S = 2.0
+"""The writer's own wait for SQLite's lock per attempt; it retries after that, it never gives up."""
+
+
 def _service_user(db: Database) -> User:
     return next(u for u in db.list_users() if u.role is Role.SERVICE)
 
 
-def seed_parameters(db: Database, config: MachineConfig) -> None:
-    """A database nobody has tuned yet takes the configuration's factory values."""
+def seed_values(db: Database, config: MachineConfig) -> dict[str, float] | None:
+    """The factory values a database nobody has tuned yet takes (None: it has been tuned)."""
     if db.parameter_history(limit=1):
-        return
-    values = {k: v for k, v in config_parameters(config).items() if k in db.get_parameters()}
-    db.set_parameters(values, _service_user(db))
+        return None
+    return {k: v for k, v in config_parameters(config).items() if k in db.get_parameters()}
+
+
+def apply_write(db: Database, write: PendingWrite) -> None:
+    """Store one pending write (StorageError: try again later; RecordError/ParameterError: the
+    write itself is invalid and can never be stored)."""
+    if isinstance(write, PieceWrite):
+        db.record_piece(write.record, skip_if_stored=True)
+    elif isinstance(write, AlarmWrite):
+        db.record_alarm_event(write.event, skip_if_stored=True)
+    elif not db.parameter_history(limit=1):  # still untuned: nobody has changed anything since
+        db.set_parameters(write.values, _service_user(db))
+
+
+class DurableWriter:
+    """The journal and the queue of writes not stored yet, oldest first, in order."""
+
+    def __init__(self, journal: WriteJournal, clock: Callable[[], float] = time.monotonic):
+        self.journal = journal
+        self._clock = clock
+        self._pending: deque[tuple[PendingWrite, float]] = deque()
+        self._lock = threading.Lock()
+        self.retry_s = 0.0
+        now = clock()
+        for write in journal.entries():
+            self._pending.append((write, now))
+        if self._pending:
+            log.warning(
+                "%s: %d records from before the restart to store", journal.path, len(self._pending)
+            )
+
+    def submit(self, write: PendingWrite) -> None:
+        """Journal ``write`` (on disk before it is tried) and queue it."""
+        try:
+            self.journal.append(write)
+        except OSError as exc:  # the disk refuses the journal: the queue still holds it
+            log.error(
+                "%s: journal not written (%s); the record waits in memory", self.journal.path, exc
+            )
+        with self._lock:
+            self._pending.append((write, self._clock()))
+
+    def pending(self) -> int:
+        with self._lock:
+            return len(self._pending)
+
+    def oldest_age_s(self) -> float:
+        with self._lock:
+            return self._clock() - self._pending[0][1] if self._pending else 0.0
+
+    def flush(self, db: Database) -> bool:
+        """Store what waits, in order; True when nothing is left (the journal is then emptied).
+
+        On StorageError the write stays first in line and ``retry_s`` says when to try again
+        (doubling from RETRY_FIRST_S up to RETRY_MAX_S).
+        """
+        while True:
+            with self._lock:
+                if not self._pending:
+                    break
+                write = self._pending[0][0]
+            try:
+                apply_write(db, write)
+            except StorageError as exc:
+                self.retry_s = min(RETRY_MAX_S, max(RETRY_FIRST_S, self.retry_s * 2))
+                log.warning(
+                    "record waits for the database (%s); retry in %.1f s", exc, self.retry_s
+                )
+                return False
+            except (DataError, ValueError) as exc:
+                log.error(
+                    "record refused by the database and kept in the log only: %s (%s)", exc, write
+                )
+            with self._lock:
+                self._pending.popleft()
+        self.retry_s = 0.0
+        try:
+            self.journal.clear()
+        except OSError as exc:
+            log.error(
+                "%s: journal not emptied (%s); its records are stored", self.journal.path, exc
+            )
+        return True
 
 
 class DatabaseStore:
     def __init__(self, db: Database) -> None:
         self.db = db
         self._machine_user = _service_user(db)
+        self.writer = DurableWriter(WriteJournal(journal_path(db.path)))
+        if self.writer.pending():
+            self._kick()
 
     def recipe(self, recipe_id: int) -> Recipe | None:
         try:
@@ -104,8 +214,6 @@ class DatabaseStore:
     def save_recipe(self, recipe: Recipe) -> Recipe:
         existing = self.db.get_recipe_by_name(recipe.name)
         if existing is not None:
-            from dataclasses import replace
-
             recipe = replace(recipe, id=existing.id)
         return self.db.save_recipe(recipe, self._machine_user)
 
@@ -116,57 +224,87 @@ class DatabaseStore:
         return self.db.piece_counts(_utc(shift_start))
 
     def record_piece(self, piece: PieceRecord) -> None:
-        try:
-            self.db.record_piece(production_record(piece))
-        except (DataError, ValueError) as exc:
-            log.error("production record not stored: %s", exc)
+        self._submit(PieceWrite(production_record(piece)))
 
     def record_alarm(self, transition: AlarmTransition) -> None:
-        try:
-            self.db.record_alarm_event(alarm_event(transition))
-        except (DataError, ValueError) as exc:
-            log.error("alarm history not stored: %s", exc)
+        self._submit(AlarmWrite(alarm_event(transition)))
+
+    def seed_parameters(self, values: dict[str, float]) -> None:
+        self._submit(SeedParametersWrite(values))
+
+    def _submit(self, write: PendingWrite) -> None:
+        self.writer.submit(write)
+        self._kick()
+
+    def _kick(self) -> None:
+        """Try to store what waits (here at once; the threaded store wakes its writer)."""
+        self.writer.flush(self.db)
+
+    def unstored_age_s(self) -> float:
+        """How long the oldest record not yet in the database has waited (0: none waits)."""
+        return self.writer.oldest_age_s()
 
     def close(self) -> None:
+        self.writer.flush(self.db)
         self.db.close()
 
 
 class ThreadedStore(DatabaseStore):
-    """Writes go through a queue to a thread with its own connection."""
+    """Writes go through a queue to a thread with its own connection, retried until stored."""
+
+    CLOSE_TIMEOUT_S = 10.0
 
     def __init__(self, db: Database) -> None:
+        self._wake: queue.Queue[bool] = queue.Queue()
+        self._closing = threading.Event()
+        self._close_deadline = 0.0
         super().__init__(db)
-        self._queue: queue.Queue[Callable[[DatabaseStore], None] | None] = queue.Queue()
         self._thread = threading.Thread(
             target=self._run, args=(db.path,), name="db-writer", daemon=True
         )
         self._thread.start()
 
     def _run(self, path: Path) -> None:
-        with Database.open(path) as db:
-            writer = DatabaseStore(db)
+        db: Database | None = None
+        try:
             while True:
-                job = self._queue.get()
-                if job is None:
+                if db is None:
+                    db = self._open_writer(path)
+                done = db is not None and self.writer.flush(db)
+                if self._closing.is_set() and (done or time.monotonic() > self._close_deadline):
                     return
-                job(writer)
+                with contextlib.suppress(queue.Empty):
+                    self._wake.get(
+                        timeout=None if done else max(self.writer.retry_s, RETRY_FIRST_S)
+                    )
+        finally:
+            if db is not None:
+                db.close()
 
-    def record_piece(self, piece: PieceRecord) -> None:
-        self._queue.put(lambda w: w.record_piece(piece))
+    def _open_writer(self, path: Path) -> Database | None:
+        try:
+            return Database.open(path, busy_timeout_s=WRITER_BUSY_TIMEOUT_S, load_samples=False)
+        except DataError as exc:
+            self.writer.retry_s = min(RETRY_MAX_S, max(RETRY_FIRST_S, self.writer.retry_s * 2))
+            log.warning("database not available for the records (%s)", exc)
+            return None
 
-    def record_alarm(self, transition: AlarmTransition) -> None:
-        self._queue.put(lambda w: w.record_alarm(transition))
+    def _kick(self) -> None:
+        self._wake.put(True)
 
     def close(self) -> None:
-        self._queue.put(None)
-        self._thread.join(timeout=10)
-        super().close()
+        """Store what waits (up to CLOSE_TIMEOUT_S); what is still not stored stays journalled."""
+        self._close_deadline = time.monotonic() + self.CLOSE_TIMEOUT_S
+        self._closing.set()
+        self._wake.put(True)
+        self._thread.join(timeout=self.CLOSE_TIMEOUT_S + WRITER_BUSY_TIMEOUT_S + 1.0)
+        self.db.close()
 
 
 def open_store(db_path: Path, config: MachineConfig, *, threaded: bool) -> DatabaseStore:
     db = Database.open(db_path, limits=stave_limits(config))
-    try:
-        seed_parameters(db, config)
-    except DataError as exc:
-        log.warning("factory parameters from the configuration not applied: %s", exc)
-    return ThreadedStore(db) if threaded else DatabaseStore(db)
+    store = ThreadedStore(db) if threaded else DatabaseStore(db)
+    values = seed_values(db, config)
+    if values:
+        store.seed_parameters(values)
+    return store

@@ -14,6 +14,9 @@ from typing import Protocol
 from app.data.recipe import Recipe
 from app.machine.alarms import AlarmTransition
 
+RECORD_DELAY_ALARM_S = 60.0
+"""A record not stored after this long raises W103 (the database is busy or unavailable)."""
+
 
 @dataclass(frozen=True)
 class PieceRecord:
@@ -51,5 +54,9 @@ class MachineStore(Protocol):
     def record_piece(self, piece: PieceRecord) -> None: ...
 
     def record_alarm(self, transition: AlarmTransition) -> None: ...
+
+    def unstored_age_s(self) -> float:
+        """How long the oldest record not yet in the database has waited (0: none waits)."""
+        ...
 
     def close(self) -> None: ...

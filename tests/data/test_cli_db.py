@@ -18,8 +18,17 @@ from app.data.records import PieceResult, ProductionRecord
 HEADER = "name,length_mm,thickness_mm,length_ratio,width_ratio,tilt_deg"
 
 
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = main(list(argv))
+@pytest.fixture(autouse=True)
+def no_pin_in_the_environment(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("STAVE_PIN", raising=False)
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str, pin: str = "") -> tuple[int, str, str]:
+    """Run ``stave db``; a PIN is given the way a script gives it, in $STAVE_PIN."""
+    with pytest.MonkeyPatch.context() as env:
+        if pin:
+            env.setenv("STAVE_PIN", pin)
+        code = main(list(argv))
     captured = capsys.readouterr()
     return code, captured.out, captured.err
 
@@ -43,7 +52,7 @@ def test_export_and_import(
     assert len(json.loads(exported.read_text(encoding="utf-8"))["recipes"]) == 7
 
     other = tmp_path / "other.db"
-    code, out, err = run(capsys, "import", str(exported), "--db", str(other), "--pin", "1234")
+    code, out, err = run(capsys, "import", str(exported), "--db", str(other), pin="1234")
     assert (code, err) == (0, "")
     assert "7 accepted" in out  # new database: samples already there, all unchanged
 
@@ -53,7 +62,7 @@ def test_import_with_rejected_rows_exits_1_and_reports_them(
 ) -> None:
     source = tmp_path / "in.csv"
     source.write_text(f"{HEADER}\nFine,1000,28,1/5,4/5,8\nShort,500,28,1/5,4/5,8\n")
-    code, out, _ = run(capsys, "import", str(source), "--db", str(db_path), "--pin", "9999")
+    code, out, _ = run(capsys, "import", str(source), "--db", str(db_path), pin="9999")
     assert code == 1
     assert "1 accepted (1 new" in out
     assert "row 3 (Short): length_mm = 500 is out of range" in out
@@ -65,11 +74,11 @@ def test_import_with_rejected_rows_exits_1_and_reports_them(
 @pytest.mark.parametrize(
     ("argv", "expected"),
     [
-        (["import", "{csv}", "--pin", "0000"], "needs the role technician"),
-        (["import", "{csv}", "--pin", "5555"], "belongs to no user"),
-        (["import", "{csv}"], "--pin"),
-        (["import", "{missing}", "--pin", "1234"], "not found"),
-        (["import", "{txt}", "--pin", "1234"], "not supported"),
+        (["import", "{csv}", "PIN=0000"], "needs the role technician"),
+        (["import", "{csv}", "PIN=5555"], "belongs to no user"),
+        (["import", "{csv}"], "needs the PIN of a technician"),
+        (["import", "{missing}", "PIN=1234"], "not found"),
+        (["import", "{txt}", "PIN=1234"], "not supported"),
         (["export", "{out_txt}"], "not supported"),
         (["export-production", "{out_csv}"], "--day, --shift or --from/--to"),
         (["export-production", "{out_csv}", "--from", "2024-05-02T06:00"], "go together"),
@@ -87,7 +96,7 @@ def test_import_with_rejected_rows_exits_1_and_reports_them(
             "cannot be combined",
         ),
         (["export-production", "{out_csv}", "--day", "2024-05-02", "--shift", "9"], "shift = 9"),
-        (["restore", "{csv}"], "not an SQLite database"),
+        (["restore", "{csv}"], "no checksum file"),
         (["backup", "{csv}"], "exists"),
     ],
 )
@@ -109,7 +118,9 @@ def test_bad_input_exits_2_with_one_clear_line(
         "out_csv": tmp_path / "out.csv",
     }
     args = [a.format(**{k: str(v) for k, v in names.items()}) for a in argv]
-    code, _, err = run(capsys, *args, "--db", str(db_path))
+    pins = [a.removeprefix("PIN=") for a in args if a.startswith("PIN=")]
+    args = [a for a in args if not a.startswith("PIN=")]
+    code, _, err = run(capsys, *args, "--db", str(db_path), pin=pins[0] if pins else "")
     assert code == 2
     assert err.count("\n") == 1 and err.startswith(f"stave db {argv[0]}: ")
     assert expected in err
@@ -185,7 +196,11 @@ def test_backup_and_restore(
     copy = tmp_path / "copy.db"
     code, out, _ = run(capsys, "backup", str(copy), "--db", str(db_path))
     assert code == 0 and str(copy) in out
-    code, out, _ = run(capsys, "restore", str(copy), "--db", str(db_path))
+    code, _, err = run(capsys, "restore", str(copy), "--db", str(db_path))
+    assert code == 2 and "needs the PIN of a service user" in err
+    code, _, err = run(capsys, "restore", str(copy), "--db", str(db_path), pin="1234")
+    assert code == 2 and "needs the role service" in err
+    code, out, _ = run(capsys, "restore", str(copy), "--db", str(db_path), pin="9999")
     assert code == 0 and "7 recipes" in out and "kept as" in out
 
 

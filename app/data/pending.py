@@ -1,0 +1,189 @@
+"""Records the machine could not store yet, kept in a journal file until the database takes them.
+
+Why a journal and not only a retry: a production record or an alarm transition is made once,
+by the machine, and nobody can make it again. While the database is busy (a large import, a
+backup, a slow disk) the record waits; if the process is killed or the panel loses power while
+it waits, the journal file still holds it and the next start stores it. Each write is appended
+as one JSON line and flushed to disk before the database is even tried, so there is no moment
+at which a record exists only in memory beyond the call that made it.
+
+Storing a journalled write twice is harmless: :meth:`Database.record_piece` and
+:meth:`Database.record_alarm_event` with ``skip_if_stored`` find an identical row and keep it,
+so a crash between the database's commit and the journal's truncation duplicates nothing.
+A torn last line (the crash came while appending) is the one write that never reached the
+disk completely; it is skipped with a log line, the lines before it are kept.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+from dataclasses import dataclass
+from datetime import datetime
+from pathlib import Path
+from typing import Any
+
+from app.data.files import PRIVATE_FILE_MODE
+from app.data.records import (
+    AlarmEvent,
+    AlarmState,
+    PieceResult,
+    ProductionRecord,
+    format_utc,
+    parse_utc,
+)
+
+_log = logging.getLogger(__name__)
+
+JOURNAL_SUFFIX = ".pending"
+"""The journal lives beside the database: ``stave.db.pending``."""
+
+
+@dataclass(frozen=True)
+class PieceWrite:
+    """A production record to store."""
+
+    record: ProductionRecord
+
+
+@dataclass(frozen=True)
+class AlarmWrite:
+    """An alarm transition to store."""
+
+    event: AlarmEvent
+
+
+@dataclass(frozen=True)
+class SeedParametersWrite:
+    """The configuration's factory values for a database nobody has tuned yet."""
+
+    values: dict[str, float]
+
+
+PendingWrite = PieceWrite | AlarmWrite | SeedParametersWrite
+
+
+def journal_path(database_path: Path) -> Path:
+    """Where the journal of ``database_path`` lives."""
+    return database_path.with_name(database_path.name + JOURNAL_SUFFIX)
+
+
+def _time(moment: datetime) -> str:
+    return format_utc(moment)
+
+
+def encode_write(write: PendingWrite) -> dict[str, Any]:
+    """The JSON object of one journal line."""
+    if isinstance(write, PieceWrite):
+        r = write.record
+        return {
+            "kind": "piece",
+            "time": _time(r.time),
+            "recipe_id": r.recipe_id,
+            "recipe_name": r.recipe_name,
+            "width_mm": r.width_mm,
+            "d_mm": r.d_mm,
+            "r_mm": r.r_mm,
+            "cycle_time_s": r.cycle_time_s,
+            "result": r.result.value,
+            "alarm_code": r.alarm_code,
+            "tilt_deg": r.tilt_deg,
+        }
+    if isinstance(write, AlarmWrite):
+        e = write.event
+        return {
+            "kind": "alarm",
+            "time": _time(e.time),
+            "code": e.code,
+            "text": e.text,
+            "source": e.source,
+            "from_state": e.from_state.value,
+            "to_state": e.to_state.value,
+            "user_name": e.user_name,
+        }
+    return {"kind": "seed_parameters", "values": dict(write.values)}
+
+
+def decode_write(data: dict[str, Any]) -> PendingWrite:
+    """Inverse of :func:`encode_write`; ValueError/KeyError/TypeError for a damaged line."""
+    kind = data["kind"]
+    if kind == "piece":
+        return PieceWrite(
+            ProductionRecord(
+                time=parse_utc(data["time"]),
+                recipe_id=data["recipe_id"],
+                recipe_name=str(data["recipe_name"]),
+                width_mm=data["width_mm"],
+                d_mm=data["d_mm"],
+                r_mm=data["r_mm"],
+                cycle_time_s=float(data["cycle_time_s"]),
+                result=PieceResult(data["result"]),
+                alarm_code=data["alarm_code"],
+                tilt_deg=data["tilt_deg"],
+            )
+        )
+    if kind == "alarm":
+        return AlarmWrite(
+            AlarmEvent(
+                time=parse_utc(data["time"]),
+                code=str(data["code"]),
+                text=str(data["text"]),
+                source=str(data["source"]),
+                from_state=AlarmState(data["from_state"]),
+                to_state=AlarmState(data["to_state"]),
+                user_name=data["user_name"],
+            )
+        )
+    if kind == "seed_parameters":
+        return SeedParametersWrite({str(k): float(v) for k, v in data["values"].items()})
+    raise ValueError(f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters")
+
+
+class WriteJournal:
+    """An append-only file of pending writes (one JSON line each), emptied once all are stored."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+
+    def append(self, write: PendingWrite) -> None:
+        """Add one write and flush it to disk (OSError if the disk refuses)."""
+        line = json.dumps(encode_write(write), ensure_ascii=False, allow_nan=False) + "\n"
+        fd = os.open(
+            self.path,
+            os.O_WRONLY | os.O_APPEND | os.O_CREAT | os.O_NOFOLLOW | getattr(os, "O_CLOEXEC", 0),
+            PRIVATE_FILE_MODE,
+        )
+        try:
+            os.write(fd, line.encode("utf-8"))
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+
+    def entries(self) -> list[PendingWrite]:
+        """Every complete write in the file, oldest first (none if there is no file)."""
+        try:
+            raw = self.path.read_bytes()
+        except FileNotFoundError:
+            return []
+        writes: list[PendingWrite] = []
+        for number, line in enumerate(raw.split(b"\n"), start=1):
+            if not line.strip():
+                continue
+            try:
+                writes.append(decode_write(json.loads(line.decode("utf-8"))))
+            except (ValueError, KeyError, TypeError, AttributeError) as exc:
+                _log.error("%s line %d: not a complete write, skipped (%s)", self.path, number, exc)
+        return writes
+
+    def clear(self) -> None:
+        """Everything in it is stored: empty the file (it stays, with its permissions)."""
+        try:
+            fd = os.open(self.path, os.O_WRONLY | os.O_NOFOLLOW | getattr(os, "O_CLOEXEC", 0))
+        except FileNotFoundError:
+            return
+        try:
+            os.ftruncate(fd, 0)
+            os.fsync(fd)
+        finally:
+            os.close(fd)
