@@ -3,9 +3,12 @@ System (PIN lock, a logged change) and the language switch, operated as a person
 
 from __future__ import annotations
 
+from datetime import UTC, datetime, timedelta
+
 import pytest
 from PySide6.QtCore import Qt
 
+from app.data.database import Database
 from app.data.users import Role
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
@@ -202,3 +205,20 @@ def test_switching_to_slovenian_retranslates_the_visible_screen(qtbot, window, t
     tap(window.overlay().buttons[0])
     assert find_button(window, "nav_recipes").text() == "Recipes"
     assert main.start_button.text().endswith("START")
+
+
+def test_the_pin_pad_is_locked_like_every_other_way_in(qtbot, window, database, tap) -> None:
+    tap(find_button(window, "nav_system"))
+    screen = window.page("system")
+    tap(find_button(window, "unlockButton"))
+    pad = window.overlay()
+    enter_pin(qtbot, window, tap, "5555")
+    assert database.pin_guard_state().failures == 1  # the pad's attempt counted
+    now = datetime.now(UTC)
+    with Database.open(database.path, clock=lambda: now) as other:
+        while other.pin_guard_state().locked_until is None:
+            assert other.authenticate("5555") is None
+            now += timedelta(seconds=120)  # past each delay, on the clock of that connection
+    enter_pin(qtbot, window, tap, "1234")  # right, but PIN entry is locked
+    assert pad.is_open and "locked" in pad.error_label.text()
+    assert screen.body.currentWidget() is screen.locked_page
