@@ -38,7 +38,6 @@ from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
 from types import TracebackType
-from typing import Any
 
 from app.data.errors import (
     DatabaseOpenError,
@@ -81,11 +80,16 @@ from app.data.records import (
     AlarmEventFilter,
     AlarmState,
     ParameterChange,
-    PieceResult,
     ProductionRecord,
     RecipeChange,
+    alarm_fields,
+    alarm_from_fields,
     format_utc,
+    optional_float,
+    optional_int,
     parse_utc,
+    production_fields,
+    production_from_fields,
     to_utc,
 )
 from app.data.schema import SCHEMA_VERSION, apply_migrations, read_schema_version, user_table_names
@@ -148,41 +152,10 @@ def _recipe_from_row(row: sqlite3.Row) -> Recipe:
     )
 
 
-def _opt_float(value: Any) -> float | None:
-    return None if value is None else float(value)
-
-
-def _opt_int(value: Any) -> int | None:
-    return None if value is None else int(value)
-
-
-def _production_from_row(row: sqlite3.Row) -> ProductionRecord:
-    return ProductionRecord(
-        id=int(row["id"]),
-        time=parse_utc(row["time"]),
-        recipe_id=_opt_int(row["recipe_id"]),
-        recipe_name=str(row["recipe_name"]),
-        width_mm=_opt_float(row["width_mm"]),
-        d_mm=_opt_float(row["d_mm"]),
-        r_mm=_opt_float(row["r_mm"]),
-        tilt_deg=_opt_float(row["tilt_deg"]),
-        cycle_time_s=float(row["cycle_time_s"]),
-        result=PieceResult(row["result"]),
-        alarm_code=row["alarm_code"],
-    )
-
-
-def _alarm_from_row(row: sqlite3.Row) -> AlarmEvent:
-    return AlarmEvent(
-        id=int(row["id"]),
-        time=parse_utc(row["time"]),
-        code=str(row["code"]),
-        text=str(row["text"]),
-        source=str(row["source"]),
-        from_state=AlarmState(row["from_state"]),
-        to_state=AlarmState(row["to_state"]),
-        user_name=row["user_name"],
-    )
+_opt_float = optional_float
+_opt_int = optional_int
+_production_from_row = production_from_fields
+_alarm_from_row = alarm_from_fields
 
 
 def _recipe_json(recipe: Recipe) -> str:
@@ -528,17 +501,16 @@ class Database:
         to_state: AlarmState,
         user_name: str | None = None,
     ) -> None:
-        conn.execute(
-            "INSERT INTO alarm_events (time, code, text, source, from_state, to_state, "
-            "user_name) VALUES (?, ?, ?, ?, ?, ?, ?)",
-            (
-                self._now(),
-                LOCKOUT_ALARM_CODE,
-                f"{LOCKOUT_ALARM_TEXT} ({LOCKOUT_FAILURES})",
-                LOCKOUT_ALARM_SOURCE,
-                from_state.value,
-                to_state.value,
-                user_name,
+        self._insert_alarm(
+            conn,
+            AlarmEvent(
+                time=self._clock(),
+                code=LOCKOUT_ALARM_CODE,
+                text=f"{LOCKOUT_ALARM_TEXT} ({LOCKOUT_FAILURES})",
+                source=LOCKOUT_ALARM_SOURCE,
+                from_state=from_state,
+                to_state=to_state,
+                user_name=user_name,
             ),
         )
 
@@ -976,21 +948,11 @@ class Database:
                     "SELECT id FROM recipes WHERE id = ?", (record.recipe_id,)
                 ).fetchone()
                 recipe_id = None if found is None else int(found["id"])
+            fields = production_fields(replace(stored, recipe_id=recipe_id))
             cursor = conn.execute(
-                "INSERT INTO production (time, recipe_id, recipe_name, width_mm, d_mm, r_mm, "
-                "tilt_deg, cycle_time_s, result, alarm_code) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (
-                    format_utc(stored.time),
-                    recipe_id,
-                    stored.recipe_name,
-                    _opt_float(stored.width_mm),
-                    _opt_float(stored.d_mm),
-                    _opt_float(stored.r_mm),
-                    _opt_float(stored.tilt_deg),
-                    float(stored.cycle_time_s),
-                    stored.result.value,
-                    stored.alarm_code,
-                ),
+                f"INSERT INTO production ({', '.join(fields)}) "
+                f"VALUES ({', '.join('?' for _ in fields)})",
+                tuple(fields.values()),
             )
         return replace(stored, id=int(cursor.lastrowid or 0), recipe_id=recipe_id)
 
@@ -1039,20 +1001,18 @@ class Database:
                 ).fetchone()
                 if row is not None:
                     return _alarm_from_row(row)
-            cursor = conn.execute(
-                "INSERT INTO alarm_events (time, code, text, source, from_state, to_state, "
-                "user_name) VALUES (?, ?, ?, ?, ?, ?, ?)",
-                (
-                    format_utc(stored.time),
-                    stored.code,
-                    stored.text,
-                    stored.source,
-                    stored.from_state.value,
-                    stored.to_state.value,
-                    stored.user_name,
-                ),
-            )
-        return replace(stored, id=int(cursor.lastrowid or 0))
+            new_id = self._insert_alarm(conn, stored)
+        return replace(stored, id=new_id)
+
+    @staticmethod
+    def _insert_alarm(conn: sqlite3.Connection, event: AlarmEvent) -> int:
+        fields = alarm_fields(event)
+        cursor = conn.execute(
+            f"INSERT INTO alarm_events ({', '.join(fields)}) "
+            f"VALUES ({', '.join('?' for _ in fields)})",
+            tuple(fields.values()),
+        )
+        return int(cursor.lastrowid or 0)
 
     def list_alarm_events(self, filters: AlarmEventFilter | None = None) -> list[AlarmEvent]:
         """Alarm transitions matching ``filters`` (all of them if None), newest first."""

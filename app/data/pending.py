@@ -20,18 +20,17 @@ import json
 import logging
 import os
 from dataclasses import dataclass
-from datetime import datetime
 from pathlib import Path
 from typing import Any
 
 from app.data.files import PRIVATE_FILE_MODE
 from app.data.records import (
     AlarmEvent,
-    AlarmState,
-    PieceResult,
     ProductionRecord,
-    format_utc,
-    parse_utc,
+    alarm_fields,
+    alarm_from_fields,
+    production_fields,
+    production_from_fields,
 )
 
 _log = logging.getLogger(__name__)
@@ -69,39 +68,12 @@ def journal_path(database_path: Path) -> Path:
     return database_path.with_name(database_path.name + JOURNAL_SUFFIX)
 
 
-def _time(moment: datetime) -> str:
-    return format_utc(moment)
-
-
 def encode_write(write: PendingWrite) -> dict[str, Any]:
-    """The JSON object of one journal line."""
+    """The JSON object of one journal line (a record in the columns the database stores)."""
     if isinstance(write, PieceWrite):
-        r = write.record
-        return {
-            "kind": "piece",
-            "time": _time(r.time),
-            "recipe_id": r.recipe_id,
-            "recipe_name": r.recipe_name,
-            "width_mm": r.width_mm,
-            "d_mm": r.d_mm,
-            "r_mm": r.r_mm,
-            "cycle_time_s": r.cycle_time_s,
-            "result": r.result.value,
-            "alarm_code": r.alarm_code,
-            "tilt_deg": r.tilt_deg,
-        }
+        return {"kind": "piece", **production_fields(write.record)}
     if isinstance(write, AlarmWrite):
-        e = write.event
-        return {
-            "kind": "alarm",
-            "time": _time(e.time),
-            "code": e.code,
-            "text": e.text,
-            "source": e.source,
-            "from_state": e.from_state.value,
-            "to_state": e.to_state.value,
-            "user_name": e.user_name,
-        }
+        return {"kind": "alarm", **alarm_fields(write.event)}
     return {"kind": "seed_parameters", "values": dict(write.values)}
 
 
@@ -109,32 +81,9 @@ def decode_write(data: dict[str, Any]) -> PendingWrite:
     """Inverse of :func:`encode_write`; ValueError/KeyError/TypeError for a damaged line."""
     kind = data["kind"]
     if kind == "piece":
-        return PieceWrite(
-            ProductionRecord(
-                time=parse_utc(data["time"]),
-                recipe_id=data["recipe_id"],
-                recipe_name=str(data["recipe_name"]),
-                width_mm=data["width_mm"],
-                d_mm=data["d_mm"],
-                r_mm=data["r_mm"],
-                cycle_time_s=float(data["cycle_time_s"]),
-                result=PieceResult(data["result"]),
-                alarm_code=data["alarm_code"],
-                tilt_deg=data["tilt_deg"],
-            )
-        )
+        return PieceWrite(production_from_fields(data))
     if kind == "alarm":
-        return AlarmWrite(
-            AlarmEvent(
-                time=parse_utc(data["time"]),
-                code=str(data["code"]),
-                text=str(data["text"]),
-                source=str(data["source"]),
-                from_state=AlarmState(data["from_state"]),
-                to_state=AlarmState(data["to_state"]),
-                user_name=data["user_name"],
-            )
-        )
+        return AlarmWrite(alarm_from_fields(data))
     if kind == "seed_parameters":
         return SeedParametersWrite({str(k): float(v) for k, v in data["values"].items()})
     raise ValueError(f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters")

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from enum import Enum
+from typing import Any, Protocol
 
 
 class PieceResult(Enum):
@@ -193,3 +194,84 @@ class RecipeChange:
     user_name: str
     before_json: str | None
     after_json: str | None
+
+
+class Fields(Protocol):
+    """A row by column name: ``sqlite3.Row`` or a dict (a line of the write journal)."""
+
+    def __getitem__(self, key: str, /) -> Any: ...
+
+    def keys(self) -> Any: ...
+
+
+def optional_float(value: Any) -> float | None:
+    return None if value is None else float(value)
+
+
+def optional_int(value: Any) -> int | None:
+    return None if value is None else int(value)
+
+
+def _id(fields: Fields) -> int | None:
+    # keys(): ``in`` on an sqlite3.Row looks at the values, not the column names
+    return optional_int(fields["id"]) if "id" in fields.keys() else None  # noqa: SIM118
+
+
+def production_fields(record: ProductionRecord) -> dict[str, Any]:
+    """The stored columns of a record (time in the stored text form), without its id."""
+    return {
+        "time": format_utc(record.time),
+        "recipe_id": record.recipe_id,
+        "recipe_name": record.recipe_name,
+        "width_mm": optional_float(record.width_mm),
+        "d_mm": optional_float(record.d_mm),
+        "r_mm": optional_float(record.r_mm),
+        "tilt_deg": optional_float(record.tilt_deg),
+        "cycle_time_s": float(record.cycle_time_s),
+        "result": record.result.value,
+        "alarm_code": record.alarm_code,
+    }
+
+
+def production_from_fields(fields: Fields) -> ProductionRecord:
+    """Inverse of :func:`production_fields` (a stored row, or a journal line)."""
+    return ProductionRecord(
+        id=_id(fields),
+        time=parse_utc(fields["time"]),
+        recipe_id=optional_int(fields["recipe_id"]),
+        recipe_name=str(fields["recipe_name"]),
+        width_mm=optional_float(fields["width_mm"]),
+        d_mm=optional_float(fields["d_mm"]),
+        r_mm=optional_float(fields["r_mm"]),
+        tilt_deg=optional_float(fields["tilt_deg"]),
+        cycle_time_s=float(fields["cycle_time_s"]),
+        result=PieceResult(fields["result"]),
+        alarm_code=fields["alarm_code"],
+    )
+
+
+def alarm_fields(event: AlarmEvent) -> dict[str, Any]:
+    """The stored columns of an alarm transition (time in the stored text form), without id."""
+    return {
+        "time": format_utc(event.time),
+        "code": event.code,
+        "text": event.text,
+        "source": event.source,
+        "from_state": event.from_state.value,
+        "to_state": event.to_state.value,
+        "user_name": event.user_name,
+    }
+
+
+def alarm_from_fields(fields: Fields) -> AlarmEvent:
+    """Inverse of :func:`alarm_fields`."""
+    return AlarmEvent(
+        id=_id(fields),
+        time=parse_utc(fields["time"]),
+        code=str(fields["code"]),
+        text=str(fields["text"]),
+        source=str(fields["source"]),
+        from_state=AlarmState(fields["from_state"]),
+        to_state=AlarmState(fields["to_state"]),
+        user_name=fields["user_name"],
+    )

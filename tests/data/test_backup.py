@@ -84,6 +84,16 @@ def live_bytes(path: Path) -> str:
     return digest.hexdigest()
 
 
+def assert_refused_untouched(db: Database, candidate: Path, message: str) -> None:
+    """Refused with ``message``; the live database byte-identical and no copy left behind."""
+    before = live_bytes(db.path)
+    files_before = sorted(p.name for p in db.path.parent.iterdir())
+    with pytest.raises(BackupError, match=message):
+        restore_database(candidate, db.path, authorize=SERVICE)
+    assert live_bytes(db.path) == before
+    assert sorted(p.name for p in db.path.parent.iterdir()) == files_before
+
+
 def test_a_backup_is_private_and_carries_its_checksum(db: Database, tmp_path: Path) -> None:
     target = backup_database(db, tmp_path / "b.db")
     assert stat.S_IMODE(target.stat().st_mode) == 0o600
@@ -291,12 +301,7 @@ def test_restore_refuses_a_candidate_that_would_break_the_application(
         candidate = backup_database(db, tmp_path / "candidate.db", overwrite=True)
     change(candidate)
     sign(candidate)
-    before = live_bytes(db.path)
-    files_before = sorted(p.name for p in db.path.parent.iterdir())
-    with pytest.raises(BackupError, match=message):
-        restore_database(candidate, db.path, authorize=SERVICE)
-    assert live_bytes(db.path) == before
-    assert sorted(p.name for p in db.path.parent.iterdir()) == files_before  # no copy left
+    assert_refused_untouched(db, candidate, message)
 
 
 @pytest.mark.parametrize(
@@ -338,12 +343,7 @@ def test_restore_refuses_a_file_that_is_not_a_healthy_backup(
         make(candidate)
     if make not in ("unsigned", "changed after signing") and candidate.exists():
         sign(candidate)
-    before = live_bytes(db.path)
-    files_before = sorted(p.name for p in db.path.parent.iterdir())
-    with pytest.raises(BackupError, match=message):
-        restore_database(candidate, db.path, authorize=SERVICE)
-    assert live_bytes(db.path) == before
-    assert sorted(p.name for p in db.path.parent.iterdir()) == files_before  # no copy made
+    assert_refused_untouched(db, candidate, message)
 
 
 def test_restore_into_a_new_place(db: Database, tmp_path: Path) -> None:

@@ -17,7 +17,6 @@ from app.data.errors import PermissionDeniedError, PinEntryRefused
 from app.data.pin_guard import (
     FREE_FAILURES,
     LOCKOUT_ALARM_CODE,
-    LOCKOUT_FAILURES,
     LOCKOUT_S,
     MAX_DELAY_S,
     delay_after,

@@ -83,7 +83,6 @@ def test_import_while_cutting_stores_every_record(
     worker.start()
     assert locked.wait(10)
     waited = False
-    warned = False
     cycles = 0
     while worker.is_alive() or cycles < 3:
         rig.load()
@@ -91,13 +90,13 @@ def test_import_while_cutting_stores_every_record(
         rig.until(lambda c: c.state is MachineState.READY, 200.0)
         cycles += 1
         waited = waited or rig.controller.store.unstored_age_s() > 0
-        warned = warned or rig.controller.alarms.is_active("W103", "database")
     worker.join()
     rig.run(0.1)
     transitions = list(rig.controller.alarms.history)
     runtime.shutdown()
 
-    assert waited and warned  # the records waited, and the operator was told
+    assert waited  # the records waited ...
+    assert any(t.code == "W103" for t in transitions)  # ... and the operator was told
     assert reports and "3000 accepted (3000 new" in reports[0]
     with Database.open(db_path) as db:
         assert db.piece_counts(EPOCH) == (cycles, cycles)
