@@ -43,7 +43,7 @@ def tool_centre_path(toolpath: ToolPath, side: str) -> tuple[Segment, ...]:
     """
     params = toolpath.params
     dx = -params.start_x_mm
-    dy = -params.start_y_mm + SIDE_SIGN[side] * params.pivot_shift_mm
+    dy = -params.start_y_mm + SIDE_SIGN[side] * params.side_pivot_shift_mm(side)
     moved: list[Segment] = []
     for segment in toolpath.side_segments(side):
         start = (segment.start[0] + dx, segment.start[1] + dy)
@@ -66,7 +66,7 @@ def edge_deviation(toolpath: ToolPath, side: str, samples_per_piece: int = 400) 
     if samples_per_piece < 2:
         raise ValueError(f"samples_per_piece = {samples_per_piece} is out of range: allowed >= 2")
     path = tool_centre_path(toolpath, side)
-    radius = toolpath.params.effective_radius_mm
+    radius = toolpath.params.side_effective_radius_mm(side)
     overcut = undercut = 0.0
     for piece in profile_edge(toolpath.profile, side):
         length = piece.length_mm

@@ -10,7 +10,7 @@ Pure computation (no devices, no time): motion planning is the machine's, on top
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from enum import Enum
 
 from app.geometry.bevel import SideTilts, TiltRule
@@ -73,24 +73,18 @@ class StaveCut:
 def toolpath_params(params: Mapping[str, float], tilts: SideTilts) -> ToolPathParams:
     """The tool path's parameters from the system parameters and the bevels.
 
-    Raises GeometryError for a missing or non-numeric parameter, and for two different bevels:
-    the tool path cuts both sides at one tilt today."""
-    if not tilts.symmetric:
-        allowed = f"the same bevel on both sides, here {format_value(tilts.a_deg)} deg"
-        message = (
-            f"tilt_deg = {format_value(tilts.b_deg)} on side B differs from side A: "
-            f"allowed {allowed}"
-        )
-        raise GeometryError([FieldError("tilt_deg", tilts.b_deg, allowed, message)])
+    Raises GeometryError for a missing or non-numeric parameter. Side A is cut at +a_deg,
+    side B at -b_deg."""
     errors: list[FieldError] = []
-    for name in (f.name for f in fields(ToolPathParams) if f.name != "tilt_deg"):
+    for name in ToolPathParams.system_parameter_names():
         value = params.get(name)
         if isinstance(value, bool) or not isinstance(value, int | float):
             message = f"{name} = {format_value(value)} is not a number: allowed a number"
             errors.append(FieldError(name, value, "a number", message))
     if errors:
         raise GeometryError(errors)
-    return ToolPathParams.from_parameters(params, tilts.a_deg)
+    b_deg = None if tilts.symmetric else tilts.b_deg
+    return ToolPathParams.from_parameters(params, tilts.a_deg, b_deg)
 
 
 def cut_stave(

@@ -8,8 +8,10 @@ Sign conventions (docs/MACHINE.md leaves some of them open; these are the ones t
   (P0 = the system parameter "start position"). The path's points are the positions the X
   and Y axes take, i.e. of the tilt pivot of the router holder.
 * Z (tilt, deg): a positive tilt moves the cutter's lower end towards +Y: the tool axis meets
-  the table at Y_pivot + Hm * tan(Z). Side A is cut at Z = +alpha, side B at Z = -alpha, so
-  on both sides the cutter leans over the board and the top face comes out narrower.
+  the table at Y_pivot + Hm * tan(Z). Side A is cut at Z = +alpha_A, side B at Z = -alpha_B
+  (equal on a round barrel; on an oval each side of a stave has its own bevel), so on both
+  sides the cutter leans over the board and the top face comes out narrower. Below, alpha is
+  the bevel of the side being cut.
 * Compensation: the edge is offset *outward* (away from the board: +y on side A, -y on
   side B) along its normal by rc = r / cos(alpha), the radius in plan view of the tilted
   cutter at the table; lines stay lines, the arc keeps its centre with radius R + rc. Then the
@@ -85,7 +87,10 @@ class CompensationMethod(Enum):
 class ToolPathParams:
     """System parameters the tool path needs (mm, deg; machine coordinates).
 
-    tilt_deg is the recipe's bevel alpha (>= 0); start_x/y_mm is P0, the machine position of
+    tilt_deg is the bevel alpha_A of side A (>= 0) and tilt_b_deg that of side B, alpha_B
+    (None: the same as side A); side A is cut at Z = +alpha_A, side B at Z = -alpha_B, each
+    with its own r/cos(alpha) offset and Hm*tan(alpha) pivot shift. start_x/y_mm is P0, the
+    machine position of
     the profile origin; lead_mm the lead-in/lead-out length along the path (> r/cos(alpha));
     tilt_clearance_mm how far beyond (board's right end + tool radius) the tilt change
     happens, also the margin of the detours that take travel moves around the board.
@@ -101,23 +106,49 @@ class ToolPathParams:
     home_y_mm: float
     home_z_deg: float
     tilt_clearance_mm: float
+    tilt_b_deg: float | None = None
+
+    def side_tilt_deg(self, side: str) -> float:
+        """The bevel of side "A" or "B" (>= 0; side B is cut at minus this)."""
+        if side == "A" or self.tilt_b_deg is None:
+            return self.tilt_deg
+        return self.tilt_b_deg
+
+    def side_effective_radius_mm(self, side: str) -> float:
+        """r / cos(alpha) of one side: the cutter's radius in plan view at the table."""
+        return self.tool_radius_mm / math.cos(math.radians(self.side_tilt_deg(side)))
+
+    def side_pivot_shift_mm(self, side: str) -> float:
+        """Hm * tan(alpha) of one side: how far the cutter meets the table from below the pivot."""
+        return self.machine_height_mm * math.tan(math.radians(self.side_tilt_deg(side)))
+
+    @property
+    def max_tilt_deg(self) -> float:
+        return max(self.side_tilt_deg("A"), self.side_tilt_deg("B"))
 
     @property
     def effective_radius_mm(self) -> float:
-        """r / cos(alpha): the cutter's radius in plan view at the table."""
-        return self.tool_radius_mm / math.cos(math.radians(self.tilt_deg))
+        """r / cos(alpha) at the larger bevel: the widest the cutter gets at the table."""
+        return self.tool_radius_mm / math.cos(math.radians(self.max_tilt_deg))
 
     @classmethod
-    def from_parameters(cls, params: Mapping[str, float], tilt_deg: float) -> ToolPathParams:
+    def from_parameters(
+        cls, params: Mapping[str, float], tilt_deg: float, tilt_b_deg: float | None = None
+    ) -> ToolPathParams:
         """From the system parameters, whose names are this class's field names (the
         database's catalogue and the machine's configuration use the same names)."""
-        names = [f.name for f in fields(cls) if f.name != "tilt_deg"]
-        return cls(tilt_deg=tilt_deg, **{name: float(params[name]) for name in names})
+        values = {name: float(params[name]) for name in cls.system_parameter_names()}
+        return cls(tilt_deg=tilt_deg, tilt_b_deg=tilt_b_deg, **values)
+
+    @classmethod
+    def system_parameter_names(cls) -> tuple[str, ...]:
+        """The fields that are system parameters (the bevels come from the recipe and board)."""
+        return tuple(f.name for f in fields(cls) if f.name not in ("tilt_deg", "tilt_b_deg"))
 
     @property
     def pivot_shift_mm(self) -> float:
-        """Hm * tan(alpha): how far the cutter meets the table from below the pivot."""
-        return self.machine_height_mm * math.tan(math.radians(self.tilt_deg))
+        """Hm * tan(alpha) of side A (see side_pivot_shift_mm)."""
+        return self.side_pivot_shift_mm("A")
 
 
 def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
@@ -126,6 +157,8 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
     values: dict[str, float] = {}
     for name in ToolPathParams.__dataclass_fields__:
         value = getattr(params, name)
+        if name == "tilt_b_deg" and value is None:
+            continue
         is_number = isinstance(value, int | float) and not isinstance(value, bool)
         if not (is_number and math.isfinite(value)):
             errors.append(not_a_number(name, value, "a finite number"))
@@ -147,6 +180,10 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
         "machine height >= 0 mm",
     )
     tilt_ok = check("tilt_deg", 0.0 <= values.get("tilt_deg", 0.0) < 90.0, "0 <= tilt < 90 deg")
+    tilt_ok = (
+        check("tilt_b_deg", 0.0 <= values.get("tilt_b_deg", 0.0) < 90.0, "0 <= tilt < 90 deg")
+        or params.tilt_b_deg is None
+    ) and tilt_ok
     check("home_z_deg", -90.0 < values.get("home_z_deg", 0.0) < 90.0, "-90 < home tilt < 90 deg")
     check(
         "tilt_clearance_mm",
@@ -159,7 +196,8 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
             "lead_mm",
             values.get("lead_mm", 0.0) > minimum,
             f"lead > {minimum:.3f} mm",
-            "longer than the cutter's radius at the table, tool_radius_mm / cos(tilt_deg)",
+            "longer than the cutter's radius at the table, tool_radius_mm / cos(tilt), at the "
+            "larger bevel",
         )
     return errors
 
@@ -295,7 +333,7 @@ class KeepOutBox:
 
 def keep_out_box(profile: StaveProfile, params: ToolPathParams) -> KeepOutBox:
     """The box around the raw board (L x W) that travel moves keep the pivot out of."""
-    tilt_rad = math.radians(max(abs(params.home_z_deg), abs(params.tilt_deg)))
+    tilt_rad = math.radians(max(abs(params.home_z_deg), params.max_tilt_deg))
     across = params.tool_radius_mm / math.cos(tilt_rad) + params.machine_height_mm * math.tan(
         tilt_rad
     )
@@ -428,19 +466,23 @@ def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMe
     # at the very points the cutting moves computed, so the path has no gaps, not even 1 ulp.
     box = box.moved(x0, y0)
     home = (float(params.home_x_mm), float(params.home_y_mm))
-    shift = params.pivot_shift_mm
-    alpha = params.tilt_deg
+    alpha = params.side_tilt_deg("A")
+    beta = params.side_tilt_deg("B")
     cut_a = _cut_segments(
-        compensated_side(profile, "A", params.effective_radius_mm, params.lead_mm, method),
+        compensated_side(
+            profile, "A", params.side_effective_radius_mm("A"), params.lead_mm, method
+        ),
         x0,
-        y0 - shift,
+        y0 - params.side_pivot_shift_mm("A"),
         alpha,
     )
     cut_b = _cut_segments(
-        compensated_side(profile, "B", params.effective_radius_mm, params.lead_mm, method),
+        compensated_side(
+            profile, "B", params.side_effective_radius_mm("B"), params.lead_mm, method
+        ),
         x0,
-        y0 + shift,
-        -alpha,
+        y0 + params.side_pivot_shift_mm("B"),
+        -beta,
     )
     start_a, end_a = cut_a[0].start, cut_a[-1].end
     start_b, end_b = cut_b[0].start, cut_b[-1].end
@@ -453,10 +495,10 @@ def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMe
     )
     segments += cut_a
     segments += _travel([end_a, (tilt_x, end_a[1])], alpha, alpha)
-    segments += _travel([(tilt_x, end_a[1]), (tilt_x, start_b[1])], alpha, -alpha)
-    segments += _travel([(tilt_x, start_b[1]), start_b], -alpha, -alpha)
+    segments += _travel([(tilt_x, end_a[1]), (tilt_x, start_b[1])], alpha, -beta)
+    segments += _travel([(tilt_x, start_b[1]), start_b], -beta, -beta)
     segments += cut_b
-    segments += _travel(_route(end_b, home, box, margin), -alpha, params.home_z_deg)
+    segments += _travel(_route(end_b, home, box, margin), -beta, params.home_z_deg)
     return ToolPath(segments=tuple(segments), params=params, profile=profile)
 
 

@@ -84,16 +84,18 @@ def test_a_path_beyond_the_travel_stops_at_the_travel_check() -> None:
     assert exc.errors == tuple(check_toolpath_travel(path, limits))
 
 
-def test_two_different_bevels_are_refused_until_the_tool_path_cuts_them() -> None:
+def test_two_different_bevels_cut_each_side_at_its_own() -> None:
     @dataclass(frozen=True)
     class Uneven:
         def tilts_for_width(self, width_mm: float, limits: StaveLimits) -> SideTilts:
             return SideTilts(4.0, 3.0)
 
-    exc = refusal(replace(STAVE, tilt=Uneven()), 150.0)
-    assert exc.stage is CutStage.TOOLPATH
-    assert exc.fields == ("tilt_deg",)
-    assert "side B" in str(exc)
+    cut = cut_stave(replace(STAVE, tilt=Uneven()), 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    assert cut.tilts == SideTilts(4.0, 3.0)
+    params = ToolPathParams.from_parameters(PROCESS_DEFAULTS, 4.0, 3.0)
+    assert cut.toolpath == build_toolpath(cut.profile, params)
+    assert {s.z_end_deg for s in cut.toolpath.side_segments("A")} == {4.0}
+    assert {s.z_end_deg for s in cut.toolpath.side_segments("B")} == {-3.0}
 
 
 def test_each_distinct_bevel_is_validated() -> None:

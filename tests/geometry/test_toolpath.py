@@ -323,3 +323,40 @@ def test_to_json_list_format():
 def test_side_segments_rejects_unknown_side():
     with pytest.raises(ValueError, match="side must be 'A' or 'B'"):
         build_toolpath(EXAMPLE, DEFAULT_PARAMS).side_segments("C")
+
+
+def test_two_bevels_side_a_at_plus_alpha_a_side_b_at_minus_alpha_b():
+    """An oval barrel's stave: each side has its own tilt, offset r/cos and pivot shift."""
+    params = replace(DEFAULT_PARAMS, tilt_deg=15.6644, tilt_b_deg=14.6323)
+    path = build_toolpath(EXAMPLE, params)
+    assert {s.z_end_deg for s in path.side_segments("A")} == {15.6644}
+    assert {s.z_end_deg for s in path.side_segments("B")} == {-14.6323}
+    tilt_change = path.segments[7]
+    assert (tilt_change.z_start_deg, tilt_change.z_end_deg) == (15.6644, -14.6323)
+    for side, alpha, sign in (("A", 15.6644, 1.0), ("B", 14.6323, -1.0)):
+        rc = 40 / math.cos(math.radians(alpha))
+        shift = 250 * math.tan(math.radians(alpha))
+        assert params.side_effective_radius_mm(side) == rc
+        assert params.side_pivot_shift_mm(side) == shift
+        arc = next(s for s in path.side_segments(side) if isinstance(s, ArcSegment))
+        belly = arc.point_at(arc.length_mm / 2)
+        assert belly[1] + sign * (shift - rc) == pytest.approx(400 + sign * 75.0, abs=1e-9)
+        assert arc.radius_mm == pytest.approx(EXAMPLE.R + rc, rel=1e-12)
+    # The larger bevel sets the lead's minimum and the keep-out box.
+    assert params.effective_radius_mm == 40 / math.cos(math.radians(15.6644))
+    wider = keep_out_box(EXAMPLE, replace(params, tilt_deg=14.6323, tilt_b_deg=15.6644))
+    assert keep_out_box(EXAMPLE, params) == wider
+
+
+def test_equal_bevels_given_twice_are_the_one_bevel_path():
+    twice = build_toolpath(EXAMPLE, replace(DEFAULT_PARAMS, tilt_b_deg=DEFAULT_PARAMS.tilt_deg))
+    assert twice.segments == build_toolpath(EXAMPLE, DEFAULT_PARAMS).segments
+
+
+def test_side_b_bevel_is_validated_by_name():
+    with pytest.raises(GeometryError) as caught:
+        build_toolpath(EXAMPLE, replace(DEFAULT_PARAMS, tilt_b_deg=95.0))
+    assert "tilt_b_deg" in caught.value.fields
+    with pytest.raises(GeometryError) as caught:
+        build_toolpath(EXAMPLE, replace(DEFAULT_PARAMS, tilt_b_deg=math.nan))
+    assert caught.value.fields == ("tilt_b_deg",)
