@@ -55,21 +55,22 @@ from app.drivers.contracts import (
     LifecycleError,
     LifecycleState,
 )
+from app.drivers.lifecycle import ManagedLifecycle
 
 log = logging.getLogger(__name__)
 
 
-class CanopenDevice:
-    """configure/activate/deactivate/shutdown of a group of nodes on a shared bus."""
+class CanopenDevice(ManagedLifecycle):
+    """The hooks of the one lifecycle for a group of nodes on a shared bus."""
 
     owner = ""  # "motion" or "io": the bus routes this group's events by it
     profile = 0  # CiA device profile the nodes must report in 0x1000 (402, 401)
     consumes_master_heartbeat = False  # the nodes watch the controller's heartbeat (0x1016)
 
     def __init__(self, bus: CanopenBus, settings: CanopenSettings) -> None:
+        super().__init__(type(self).__name__)
         self._bus = bus
         self._settings = settings
-        self._state = LifecycleState.UNCONFIGURED
         self._fault = ""  # latched reason of a loss; cleared only by configure()
         self._fault_device = ""
         self._acquired = False
@@ -82,6 +83,10 @@ class CanopenDevice:
     @property
     @abstractmethod
     def device_label(self) -> str: ...
+
+    @property
+    def lifecycle_label(self) -> str:
+        return self.device_label
 
     @abstractmethod
     def _nodes(self) -> dict[int, str]:
@@ -110,16 +115,8 @@ class CanopenDevice:
     def _on_lost(self) -> None:
         """Best effort when a node is lost: bring the reachable nodes to a safe state."""
 
-    # ---- lifecycle ----
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._state
-
-    def configure(self) -> None:
-        if self._state is LifecycleState.FINALIZED:
-            raise LifecycleError(self.device_label, "shut down; create a new backend")
-        if self._state is LifecycleState.ACTIVE:
-            raise LifecycleError(self.device_label, "active: deactivate before configuring")
+    # ---- lifecycle hooks ----
+    def _on_configure(self) -> None:
         self._release()
         try:
             self._bus.acquire()
@@ -144,19 +141,13 @@ class CanopenDevice:
             self._wait_nodes(lambda n: self._bus.beats(n) > beats[n], "no heartbeat")
         except DriverError:
             self._release()
-            self._state = LifecycleState.ERROR
             raise
         self._fault = ""
         self._missed = {n: 0 for n in self._nodes()}
         self._disarmed.clear()
-        self._state = LifecycleState.INACTIVE
         log.info("%s configured", self.device_label)
 
-    def activate(self) -> None:
-        if self._state is not LifecycleState.INACTIVE:
-            raise LifecycleError(
-                self.device_label, f"cannot activate from {self._state.value}; configure first"
-            )
+    def _on_activate(self) -> None:
         try:
             if self.consumes_master_heartbeat:
                 for node_id in sorted(self._disarmed):
@@ -175,43 +166,41 @@ class CanopenDevice:
             self._missed = {n: 0 for n in self._nodes()}
             self._start_exchange()
         except DriverError as exc:
-            self._state = LifecycleState.ERROR
             self._fault, self._fault_device = str(exc), exc.device
             raise
-        self._state = LifecycleState.ACTIVE
         log.info("%s active", self.device_label)
 
-    def deactivate(self) -> None:
-        if self._state not in (LifecycleState.ACTIVE, LifecycleState.ERROR) or not self._acquired:
-            return
-        was_active = self._state is LifecycleState.ACTIVE
+    def _on_deactivate(self) -> None:
+        """Drives disabled (outputs off), nodes PRE-OPERATIONAL, the consumers that are safe
+        switched off, the heartbeat stopped; a failure leaves the drives watching it."""
+        try:
+            self._stop_nodes()
+        except DriverError as exc:
+            self._fault, self._fault_device = str(exc), exc.device
+            raise
+        log.info("%s deactivated", self.device_label)
+
+    def _on_error(self) -> None:
+        """After a loss: the same safe stop for the nodes that can still hear us."""
+        if self._acquired:
+            self._stop_nodes()
+
+    def _stop_nodes(self) -> None:
         try:
             self._stop_exchange()
             for node_id in self._nodes():
                 self._bus.nmt(node_id, "PRE-OPERATIONAL")
-        except DriverError as exc:
-            log.warning("%s: deactivate: %s", self.device_label, exc)
+        except DriverError:
             self._end_master_heartbeat(disarm=False)  # the drives stop on their own
-            if was_active:
-                self._state = LifecycleState.ERROR
-                self._fault, self._fault_device = str(exc), exc.device
-            return
+            raise
         self._end_master_heartbeat(disarm=True)
-        if was_active:
-            self._state = LifecycleState.INACTIVE
-        log.info("%s deactivated", self.device_label)
 
-    def shutdown(self) -> None:
-        if self._state is LifecycleState.FINALIZED:
-            return
-        if self._state is LifecycleState.ACTIVE:
-            self.deactivate()
+    def _on_shutdown(self) -> None:
         if self._acquired:  # from ERROR: the heartbeat may still run, with nodes watching
             self._end_master_heartbeat(disarm=False)
         self._release()
-        self._state = LifecycleState.FINALIZED
 
-    def events(self) -> list[DeviceEvent]:
+    def _pending_events(self) -> list[DeviceEvent]:
         if not self._acquired:
             return []
         self._bus.supervise()  # heartbeats, and a receive thread that died meanwhile
@@ -322,7 +311,7 @@ class CanopenDevice:
 
     def _lose(self, device: str, reason: str) -> CommunicationError:
         """Latch a loss; returns the error for the caller to raise."""
-        self._state = LifecycleState.ERROR
+        self._latch_error()
         self._fault, self._fault_device = reason, device
         try:
             self._on_lost()

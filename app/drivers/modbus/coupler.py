@@ -16,9 +16,7 @@ from dataclasses import asdict
 from app.drivers.contracts import (
     DeviceEvent,
     DigitalIO,
-    DriverError,
     InputImage,
-    LifecycleError,
     LifecycleState,
     OutputImage,
 )
@@ -37,33 +35,19 @@ class ModbusIO(BusDevice, DigitalIO):
         self.address = DeviceAddress("io", settings.endpoint, settings.device_id)
         self._inputs: InputImage | None = None
 
-    def configure(self) -> None:
-        self._check_configurable()
-        self._open(lambda: self._read(tolerate=False))  # _read keeps the image
+    def _first_exchange(self) -> None:
+        self._read(tolerate=False)  # _read keeps the image
 
-    def activate(self) -> None:
+    def _on_activate(self) -> None:
         """Start cyclic exchange with every output off."""
-        if self._state is not LifecycleState.INACTIVE:
-            raise LifecycleError("io", f"activate in state {self._state.value}")
-        try:
-            self._write(OutputImage(), tolerate=False)
-        except DriverError:
-            self._state = LifecycleState.ERROR
-            raise
-        self._state = LifecycleState.ACTIVE
-
-    def deactivate(self) -> None:
-        """Every output off and INACTIVE; ERROR without a write when the link is lost (the
-        coupler's watchdog switches its outputs off then)."""
-        if self._state is not LifecycleState.ACTIVE:
-            return
-        if self._bus.stale(self._generation):
-            self._state = LifecycleState.ERROR
-            return
-        self._state = LifecycleState.INACTIVE
         self._write(OutputImage(), tolerate=False)
 
-    def events(self) -> list[DeviceEvent]:
+    def _on_deactivate(self) -> None:
+        """Every output off. With the link lost the base is in ERROR and nothing is written
+        (the coupler's watchdog switches its outputs off then)."""
+        self._write(OutputImage(), tolerate=False)
+
+    def _pending_events(self) -> list[DeviceEvent]:
         return self._bus.events()
 
     # -- cyclic exchange ------------------------------------------------------------------

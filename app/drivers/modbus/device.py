@@ -1,4 +1,4 @@
-"""The lifecycle every device on the shared :class:`ModbusBus` follows: :class:`BusDevice`.
+"""What every device on the shared :class:`ModbusBus` adds to the one lifecycle: :class:`BusDevice`.
 
 Why one class: the drives and the I/O coupler share one bus, and a link lost (or reopened by
 the other device's ``configure``) must end both the same way: ACTIVE/INACTIVE become ERROR,
@@ -15,76 +15,52 @@ from typing import TypeVar
 
 from app.drivers.contracts import (
     CommunicationError,
-    DriverError,
-    Lifecycle,
     LifecycleError,
     LifecycleState,
 )
+from app.drivers.lifecycle import ManagedLifecycle
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus
 from app.drivers.modbus.link import ModbusLink
 
 T = TypeVar("T")
 
 
-class BusDevice(Lifecycle):
-    """A :class:`Lifecycle` over a shared bus. ``user`` is this device's claim on the bus
-    (``acquire``/``release``); ``source`` names it in the errors it raises."""
+class BusDevice(ManagedLifecycle):
+    """A :class:`ManagedLifecycle` over a shared bus. ``user`` is this device's claim on
+    the bus (``acquire``/``release``); ``source`` names it in the errors it raises."""
 
     def __init__(self, bus: ModbusBus, user: str, source: str) -> None:
+        super().__init__(source)
         self._bus = bus
         self._user = user
         self._source = source
-        self._state = LifecycleState.UNCONFIGURED
         self._generation = -1
 
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._state
-
-    def _sync_state(self) -> None:
+    def _refresh_state(self) -> None:
         """ACTIVE/INACTIVE on a link lost (or reopened by the other device) since this
         device's configure is ERROR: only configure may follow."""
-        if self._state in (LifecycleState.ACTIVE, LifecycleState.INACTIVE) and self._bus.stale(
-            self._generation
-        ):
-            self._state = LifecycleState.ERROR
+        if self._bus.stale(self._generation):
+            self._latch_error()
 
-    def _check_configurable(self) -> None:
-        """The first step of ``configure``: refused while ACTIVE or FINALIZED."""
-        self._sync_state()
-        if self._state not in (
-            LifecycleState.UNCONFIGURED,
-            LifecycleState.INACTIVE,
-            LifecycleState.ERROR,
-        ):
-            raise LifecycleError(self._source, f"configure in state {self._state.value}")
+    def _first_exchange(self) -> None:
+        """What configure reads first (the device must answer)."""
 
-    def _open(self, first_exchange: Callable[[], object]) -> None:
-        """The rest of ``configure``: claim the bus, run ``first_exchange`` (the device must
-        answer), INACTIVE; on a DriverError the claim is given back and the state is ERROR."""
+    def _on_configure(self) -> None:
+        """Claim the bus (opening the links again after a loss), then the first exchange;
+        on a DriverError the claim is given back."""
+        self._bus.acquire(self._user)
+        self._generation = self._bus.generation
         try:
-            self._bus.acquire(self._user)
-            self._generation = self._bus.generation
-            first_exchange()
-        except DriverError:
-            self._state = LifecycleState.ERROR
+            self._first_exchange()
+        except Exception:
             self._bus.release(self._user)
             raise
-        self._state = LifecycleState.INACTIVE
 
-    def shutdown(self) -> None:
-        if self._state is LifecycleState.FINALIZED:
-            return
-        try:
-            self.deactivate()
-        except DriverError:
-            pass  # shutdown must always finish; the link's loss has already been reported
-        finally:
-            self._bus.release(self._user)
-            self._state = LifecycleState.FINALIZED
+    def _on_shutdown(self) -> None:
+        self._bus.release(self._user)
 
     def _check(self, *allowed: LifecycleState) -> None:
-        self._sync_state()
+        self._refresh_state()
         if self._state not in allowed:
             if self._state is LifecycleState.ERROR and self._bus.stale(self._generation):
                 raise CommunicationError(
@@ -102,5 +78,5 @@ class BusDevice(Lifecycle):
             return self._bus.exchange(device, operation, tolerate=tolerate)
         except CommunicationError:
             if self._bus.lost:
-                self._state = LifecycleState.ERROR
+                self._latch_error()
             raise

@@ -26,7 +26,6 @@ from app.drivers.contracts import (
     DeviceEvent,
     DeviceEventKind,
     DriverError,
-    LifecycleError,
     LifecycleState,
     MotionBackend,
 )
@@ -106,53 +105,32 @@ class ModbusMotion(BusDevice, MotionBackend):
     def axis_names(self) -> tuple[str, ...]:
         return tuple(self._drives)
 
-    def configure(self) -> None:
-        """Open the links and read every drive once: a drive that does not answer, or
-        refuses the mapped block, fails here with its unit id and link named."""
-        self._check_configurable()
+    def _first_exchange(self) -> None:
+        """Read every drive once: a drive that does not answer, or refuses the mapped
+        block, fails configure with its unit id and link named."""
         self._axes = {name: _Axis(s, self._axis_configs[name]) for name, s in self._drives.items()}
-        self._open(self._read_every_axis)
-
-    def _read_every_axis(self) -> None:
         for axis in self._axes.values():
             self._read_axis(axis, tolerate=False)
 
-    def activate(self) -> None:
+    def _on_activate(self) -> None:
         """Start cyclic exchange: targets are set to the measured positions. Nothing is
         written yet; the first ``write_setpoints`` writes "disable voltage" unless an enable
         was requested: a drive this backend did not enable is never left enabled."""
-        if self._state is not LifecycleState.INACTIVE:
-            raise LifecycleError("modbus", f"activate in state {self._state.value}")
-        try:
-            for axis in self._axes.values():
-                self._read_axis(axis, tolerate=False)
-                axis.target_counts = axis.actual_counts
-        except DriverError:
-            self._fail()
-            raise
-        self._state = LifecycleState.ACTIVE
+        for axis in self._axes.values():
+            self._read_axis(axis, tolerate=False)
+            axis.target_counts = axis.actual_counts
 
-    def deactivate(self) -> None:
-        """Disable every drive (one write each) and become INACTIVE. With the link lost the
-        state is ERROR and nothing is written (nothing can be: the drives' own Modbus
-        watchdog and the hard-wired stop chain act then); a write that fails here raises
-        CommunicationError after the state change."""
-        if self._state is not LifecycleState.ACTIVE:
-            return
+    def _on_deactivate(self) -> None:
+        """Disable every drive (one write each). With the link lost the base is in ERROR and
+        nothing is written (nothing can be: the drives' own Modbus watchdog and the
+        hard-wired stop chain act then)."""
         for axis in self._axes.values():
             axis.commander.disable()
-        if self._bus.stale(self._generation):
-            self._state = LifecycleState.ERROR
-            return
-        self._state = LifecycleState.INACTIVE
         self._write_all({}, tolerate=False)
 
-    def events(self) -> list[DeviceEvent]:
+    def _pending_events(self) -> list[DeviceEvent]:
         events, self._events = self._events, []
         return events + self._bus.events()
-
-    def _fail(self) -> None:
-        self._state = LifecycleState.ERROR
 
     def _axis(self, name: str) -> _Axis:
         try:
@@ -257,12 +235,10 @@ class ModbusMotion(BusDevice, MotionBackend):
             raise DriverError(axis, f"enable refused: {exc}") from None
 
     def disable(self, axis: str) -> None:
-        self._check(LifecycleState.ACTIVE)
-        self._axis(axis).commander.disable()
+        self._axis(axis).commander.disable()  # always accepted: the safe direction
 
     def quick_stop(self, axis: str) -> None:
-        self._check(LifecycleState.ACTIVE)
-        self._axis(axis).commander.quick_stop()
+        self._axis(axis).commander.quick_stop()  # always accepted: the safe direction
 
     def fault_reset(self, axis: str) -> None:
         self._check(LifecycleState.ACTIVE)

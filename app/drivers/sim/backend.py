@@ -4,11 +4,11 @@ are thin adapters onto one :class:`~app.drivers.sim.world.SimWorld`.
 Why thin: the world is the machine; the adapters only do what a fieldbus master does, so that
 the machine layer meets the same behaviour here as on Modbus or CANopen:
 
-- The lifecycle is strict: ``configure`` (from UNCONFIGURED or ERROR), ``activate`` (from
-  INACTIVE), ``deactivate`` (from ACTIVE), ``shutdown`` (any state, idempotent). A failure
-  (the link is down) leaves the device in ERROR and raises CommunicationError. Reading is
-  allowed when INACTIVE or ACTIVE; every command and write only when ACTIVE, otherwise
-  :class:`LifecycleError`. On activation the command positions are set to the measured ones.
+- The lifecycle is :class:`~app.drivers.lifecycle.ManagedLifecycle`'s, as on every backend;
+  a transition while the link is down fails with CommunicationError and leaves ERROR.
+  Reading is allowed when INACTIVE or ACTIVE; every command and write only when ACTIVE,
+  otherwise :class:`LifecycleError`, except disable and quick stop, which are always taken.
+  On activation the command positions are set to the measured ones.
 - Power requests go to the shared CiA 402 master (:mod:`app.drivers.cia402`), one per
   drive, exactly as on Modbus and CANopen; at every SYNC the master reads the drive's
   statusword and mode display and sends its controlword, mode and target. Nothing is re-sent
@@ -44,12 +44,12 @@ from app.drivers.contracts import (
     DigitalIO,
     DriverError,
     InputImage,
-    LifecycleError,
     LifecycleState,
     MachineBackend,
     MotionBackend,
     OutputImage,
 )
+from app.drivers.lifecycle import ManagedLifecycle
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.world import SimWorld
@@ -90,19 +90,15 @@ class _DriveLink:
         drive.write_target(self.target)
 
 
-class _Adapter:
-    """Lifecycle and link bookkeeping shared by the motion and I/O adapters."""
+class _Adapter(ManagedLifecycle):
+    """Link bookkeeping shared by the motion and I/O adapters; the lifecycle is the base's."""
 
     def __init__(self, world: SimWorld, link: str, device: str) -> None:
+        super().__init__(device)
         self._world = world
         self._link = link
         self._device = device
-        self._lifecycle = L.UNCONFIGURED
         self._links_seen = len(world.link_log)
-
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._lifecycle
 
     def _link_up(self) -> bool:
         return self._world.link_ok(self._link)
@@ -111,20 +107,22 @@ class _Adapter:
         if not self._link_up():
             raise CommunicationError(self._device, f"{what}: no reply (link lost)")
 
-    def _require(self, what: str, *states: LifecycleState) -> None:
-        if self._lifecycle not in states:
-            allowed = " or ".join(s.value for s in states)
-            raise LifecycleError(
-                self._device,
-                f"{what} refused: the backend is {self._lifecycle.value}, it must be {allowed}",
-            )
+    def _on_configure(self) -> None:
+        self._require_link("configure failed")
 
-    def _transition(self, what: str, to: LifecycleState, *sources: LifecycleState) -> None:
-        self._require(what, *sources)
-        if not self._link_up():
-            self._lifecycle = L.ERROR
-            raise CommunicationError(self._device, f"{what} failed: no reply (link lost)")
-        self._lifecycle = to
+    def _on_activate(self) -> None:
+        self._require_link("activate failed")
+
+    def _on_deactivate(self) -> None:
+        self._require_link("deactivate failed")
+        self._switch_off()
+
+    def _on_error(self) -> None:
+        if self._link_up():
+            self._switch_off()
+
+    def _switch_off(self) -> None:
+        """Drives disabled or outputs off."""
 
     def _link_events(self) -> list[tuple[float, DeviceEvent]]:
         """Changes of this adapter's link since the last call, with their times."""
@@ -174,29 +172,17 @@ class SimMotion(_Adapter, MotionBackend):
         self._world.advance(dt_s)
 
     def _on_sync(self) -> None:
-        if self._lifecycle is L.ACTIVE:  # cyclic PDOs only while active
+        if self._state is L.ACTIVE:  # cyclic PDOs only while active
             for link in self._links.values():
                 link.sync()
 
-    # -- lifecycle --------------------------------------------------------------------------
-    def configure(self) -> None:
-        self._transition("configure", L.INACTIVE, L.UNCONFIGURED, L.ERROR)
-
-    def activate(self) -> None:
-        self._transition("activate", L.ACTIVE, L.INACTIVE)
+    # -- lifecycle hooks ------------------------------------------------------------------------
+    def _on_activate(self) -> None:
+        super()._on_activate()
         for name, link in self._links.items():
             self._links[name] = _DriveLink(link.drive, link.master.homed and link.drive.homed)
 
-    def deactivate(self) -> None:
-        self._transition("deactivate", L.INACTIVE, L.ACTIVE)
-        self._disable_all()
-
-    def shutdown(self) -> None:
-        if self._lifecycle in (L.INACTIVE, L.ACTIVE) and self._link_up():
-            self._disable_all()
-        self._lifecycle = L.FINALIZED
-
-    def _disable_all(self) -> None:
+    def _switch_off(self) -> None:
         for link in self._links.values():
             link.master.disable()
             link.sync()
@@ -238,10 +224,10 @@ class SimMotion(_Adapter, MotionBackend):
         self._request("enable", axis, Cia402Master.enable)
 
     def disable(self, axis: str) -> None:
-        self._request("disable", axis, Cia402Master.disable)
+        self._drive_link(axis).master.disable()  # always accepted: the safe direction
 
     def quick_stop(self, axis: str) -> None:
-        self._request("quick_stop", axis, Cia402Master.quick_stop)
+        self._drive_link(axis).master.quick_stop()  # always accepted: the safe direction
 
     def fault_reset(self, axis: str) -> None:
         self._request("fault_reset", axis, Cia402Master.fault_reset)
@@ -249,7 +235,7 @@ class SimMotion(_Adapter, MotionBackend):
     def start_homing(self, axis: str) -> None:
         self._request("start_homing", axis, Cia402Master.start_homing)
 
-    def events(self) -> list[DeviceEvent]:
+    def _pending_events(self) -> list[DeviceEvent]:
         """Link changes and the drives' EMCY messages since the last call, oldest first."""
         log = self._world.emcy_log
         emcy = [
@@ -267,20 +253,8 @@ class SimIO(_Adapter, DigitalIO):
     def __init__(self, world: SimWorld) -> None:
         super().__init__(world, "io", "sim io")
 
-    def configure(self) -> None:
-        self._transition("configure", L.INACTIVE, L.UNCONFIGURED, L.ERROR)
-
-    def activate(self) -> None:
-        self._transition("activate", L.ACTIVE, L.INACTIVE)
-
-    def deactivate(self) -> None:
-        self._transition("deactivate", L.INACTIVE, L.ACTIVE)
+    def _switch_off(self) -> None:
         self._world.write_outputs(OutputImage())
-
-    def shutdown(self) -> None:
-        if self._lifecycle in (L.INACTIVE, L.ACTIVE) and self._link_up():
-            self._world.write_outputs(OutputImage())
-        self._lifecycle = L.FINALIZED
 
     def read_inputs(self) -> InputImage:
         self._require("read_inputs", L.INACTIVE, L.ACTIVE)
@@ -292,7 +266,7 @@ class SimIO(_Adapter, DigitalIO):
         self._require_link("write_outputs")
         self._world.write_outputs(outputs)
 
-    def events(self) -> list[DeviceEvent]:
+    def _pending_events(self) -> list[DeviceEvent]:
         """Link changes since the last call."""
         return [event for _, event in self._link_events()]
 
