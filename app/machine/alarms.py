@@ -47,6 +47,7 @@ CATALOGUE: dict[str, AlarmDefinition] = {
         AlarmDefinition("E015", "Homing did not complete", Severity.FAULT),
         AlarmDefinition("E016", "Axis lost its home position", Severity.FAULT),
         AlarmDefinition("E020", "Communication with the drives or I/O lost", Severity.FAULT),
+        AlarmDefinition("E021", "A drive or the I/O refused a request", Severity.FAULT),
         AlarmDefinition("E030", "Width gauge gave no reading", Severity.FAULT),
         AlarmDefinition("E031", "Width gauge reading not understood", Severity.FAULT),
         AlarmDefinition("E032", "Measured width not allowed for this recipe", Severity.FAULT),

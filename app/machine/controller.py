@@ -26,11 +26,11 @@ from dataclasses import replace
 from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import (
+    CommunicationError,
     DeviceEvent,
     DeviceEventKind,
     DriverError,
     InputImage,
-    LifecycleState,
     MachineBackend,
     OutputImage,
     WidthGauge,
@@ -143,8 +143,7 @@ class MachineController:
         """Configure and activate every device; the state follows from the encoders."""
         try:
             for device in (*self.backend.devices(), self.gauge):
-                if device.lifecycle_state is not LifecycleState.INACTIVE:
-                    device.configure()
+                device.configure()
             for device in (*self.backend.devices(), self.gauge):
                 device.activate()
             self.axes.update(self.backend.motion.read_axes())
@@ -170,12 +169,7 @@ class MachineController:
         except DriverError as exc:
             log.warning("shutdown: %s", exc)
         for device in (self.gauge, *self.backend.devices()):
-            try:
-                if device.lifecycle_state is LifecycleState.ACTIVE:
-                    device.deactivate()
-            except DriverError as exc:
-                log.warning("deactivate %s: %s", type(device).__name__, exc)
-            device.shutdown()
+            device.shutdown()  # deactivates an active device first; never raises
         self.store.close()
 
     # ---------------------------------------------------------------- commands
@@ -456,6 +450,12 @@ class MachineController:
             log.info("communication restored: %s (reset needed)", event.device)
 
     def _comms_lost(self, exc: DriverError) -> None:
+        """A failed exchange: a lost link (E020), or a device that answered and refused the
+        request (E021, with its code: a Modbus exception reply, an SDO abort), whose link
+        still works."""
+        if not isinstance(exc, CommunicationError):
+            self._fault("E021", exc.device, str(exc))
+            return
         self._comms_ok = False
         self._fault("E020", exc.device, str(exc))
 
@@ -464,10 +464,8 @@ class MachineController:
         devices = [*self.backend.devices(), self.gauge] if not self._comms_ok else [self.gauge]
         try:
             for device in devices:
-                if device.lifecycle_state is LifecycleState.ACTIVE:
-                    device.deactivate()
-                if device.lifecycle_state in (LifecycleState.UNCONFIGURED, LifecycleState.ERROR):
-                    device.configure()
+                device.deactivate()
+                device.configure()
                 device.activate()
             self._comms_ok = True
             self._gauge_lost = False

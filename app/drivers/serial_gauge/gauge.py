@@ -34,6 +34,7 @@ from app.drivers.contracts import (
     MachineBackend,
     WidthGauge,
 )
+from app.drivers.lifecycle import ManagedLifecycle
 from app.drivers.serial_gauge.lines import LineBuffer, parse_line
 from app.drivers.serial_gauge.settings import (
     GaugeMode,
@@ -45,32 +46,22 @@ DEVICE = "gauge"
 CONFIGURE_POLL_S = 0.002
 
 
-class SerialWidthGauge(WidthGauge):
+class SerialWidthGauge(ManagedLifecycle, WidthGauge):
     def __init__(
         self, settings: SerialGaugeSettings, clock: Callable[[], float] = time.monotonic
     ) -> None:
+        super().__init__(DEVICE)
         self.settings = settings
         self._clock = clock
         self._port: serial.Serial | None = None
         self._buffer = LineBuffer(settings.terminator, settings.max_line_bytes)
-        self._state = LifecycleState.UNCONFIGURED
         self._armed = False
         self._deadline = 0.0
 
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._state
-
-    # -- lifecycle --------------------------------------------------------------------------
-    def configure(self) -> None:
+    # -- lifecycle hooks ----------------------------------------------------------------------
+    def _on_configure(self) -> None:
         """Open the port and check the gauge answers (one request, or one streamed line,
         within ``reply_timeout_ms``)."""
-        if self._state not in (
-            LifecycleState.UNCONFIGURED,
-            LifecycleState.INACTIVE,
-            LifecycleState.ERROR,
-        ):
-            raise LifecycleError(DEVICE, f"configure in state {self._state.value}")
         self._close()
         s = self.settings
         try:
@@ -85,7 +76,6 @@ class SerialWidthGauge(WidthGauge):
                 exclusive=True,
             )
         except (serial.SerialException, OSError, ValueError) as exc:
-            self._state = LifecycleState.ERROR
             raise CommunicationError(DEVICE, f"cannot open {s.port}: {_reason(exc)}") from None
         try:
             self._arm()
@@ -96,27 +86,19 @@ class SerialWidthGauge(WidthGauge):
                 time.sleep(CONFIGURE_POLL_S)
         except CommunicationError:
             self._close()
-            self._state = LifecycleState.ERROR
             raise
         self._armed = False
-        self._state = LifecycleState.INACTIVE
 
-    def activate(self) -> None:
-        if self._state is not LifecycleState.INACTIVE:
-            raise LifecycleError(DEVICE, f"activate in state {self._state.value}")
+    def _on_activate(self) -> None:
         self._armed = False
         self._buffer.clear()
-        self._state = LifecycleState.ACTIVE
 
-    def deactivate(self) -> None:
-        if self._state is LifecycleState.ACTIVE:
-            self._armed = False
-            self._state = LifecycleState.INACTIVE
+    def _on_deactivate(self) -> None:
+        self._armed = False
 
-    def shutdown(self) -> None:
+    def _on_shutdown(self) -> None:
         self._close()
         self._armed = False
-        self._state = LifecycleState.FINALIZED
 
     def _close(self) -> None:
         if self._port is not None:
@@ -198,7 +180,7 @@ class SerialWidthGauge(WidthGauge):
     def _lost(self, exc: BaseException) -> NoReturn:
         self._close()
         self._armed = False
-        self._state = LifecycleState.ERROR
+        self._latch_error()
         raise CommunicationError(
             DEVICE, f"{self.settings.port} is gone (gauge unplugged?): {_reason(exc)}"
         ) from None

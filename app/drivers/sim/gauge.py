@@ -35,11 +35,11 @@ from app.drivers.contracts import (
     DeviceEvent,
     DeviceEventKind,
     GaugeReading,
-    LifecycleError,
     LifecycleState,
     MachineBackend,
     WidthGauge,
 )
+from app.drivers.lifecycle import ManagedLifecycle
 from app.drivers.sim.faults import fault_targets
 from app.drivers.sim.settings import GaugeSettings, parse_gauge_settings
 from app.drivers.sim.world import GaugeLine, GaugeMode, SimWorld
@@ -53,10 +53,11 @@ GAUGE_FAULT_KINDS: dict[str, GaugeMode] = {
 }
 
 
-class SimGauge(WidthGauge):
+class SimGauge(ManagedLifecycle, WidthGauge):
     """A WidthGauge on the simulated world (or on its own widths without one)."""
 
     def __init__(self, settings: GaugeSettings, world: SimWorld | None, period_s: float) -> None:
+        super().__init__("sim gauge")
         self.settings = settings
         self._world = world
         self._line = world.gauge_line if world is not None else GaugeLine()
@@ -67,43 +68,29 @@ class SimGauge(WidthGauge):
         self._own_time_s = 0.0
         self._due_at_s: float | None = None
         self._own_width_mm = 0.0
-        self._lifecycle = L.UNCONFIGURED
         self._plugged_seen = True
         self._injected: list[tuple[str, str]] = []
 
-    # -- lifecycle ----------------------------------------------------------------------------
-    @property
-    def lifecycle_state(self) -> LifecycleState:
-        return self._lifecycle
-
-    def _transition(self, what: str, to: LifecycleState, *sources: LifecycleState) -> None:
-        if self._lifecycle not in sources:
-            allowed = " or ".join(s.value for s in sources)
-            raise LifecycleError(
-                "sim gauge",
-                f"{what} refused: the gauge is {self._lifecycle.value}, it must be {allowed}",
-            )
+    # -- lifecycle hooks ------------------------------------------------------------------------
+    def _require_plugged(self, what: str) -> None:
         if not self._line.plugged:
-            self._lifecycle = L.ERROR
             raise CommunicationError("sim gauge", f"{what} failed: no reply (unplugged)")
-        self._lifecycle = to
 
-    def configure(self) -> None:
-        self._transition("configure", L.INACTIVE, L.UNCONFIGURED, L.ERROR)
+    def _on_configure(self) -> None:
+        self._require_plugged("configure")
 
-    def activate(self) -> None:
-        self._transition("activate", L.ACTIVE, L.INACTIVE)
+    def _on_activate(self) -> None:
+        self._require_plugged("activate")
         self._due_at_s = None
 
-    def deactivate(self) -> None:
-        self._transition("deactivate", L.INACTIVE, L.ACTIVE)
+    def _on_deactivate(self) -> None:
+        self._require_plugged("deactivate")
         self._due_at_s = None
 
-    def shutdown(self) -> None:
+    def _on_shutdown(self) -> None:
         self._due_at_s = None
-        self._lifecycle = L.FINALIZED
 
-    def events(self) -> list[DeviceEvent]:
+    def _pending_events(self) -> list[DeviceEvent]:
         plugged = self._line.plugged
         if plugged == self._plugged_seen:
             return []
@@ -120,11 +107,7 @@ class SimGauge(WidthGauge):
         return self._world.time_s if self._world is not None else self._own_time_s
 
     def _require_active(self, what: str) -> None:
-        if self._lifecycle is not L.ACTIVE:
-            raise LifecycleError(
-                "sim gauge",
-                f"{what} refused: the gauge is {self._lifecycle.value}, it must be active",
-            )
+        self._require(what, L.ACTIVE)
         if not self._line.plugged:
             raise CommunicationError("sim gauge", f"{what}: no reply (unplugged)")
 
@@ -139,7 +122,7 @@ class SimGauge(WidthGauge):
 
     def poll(self) -> GaugeReading | None:
         """The reading once it is due (once), else None; never blocks."""
-        if self._world is None and self._lifecycle is L.ACTIVE:
+        if self._world is None and self._state is L.ACTIVE:
             self._own_time_s += self._period_s  # no clock: one poll per machine period
         self._require_active("poll")
         if self._due_at_s is None or self._now() < self._due_at_s - 1e-9:

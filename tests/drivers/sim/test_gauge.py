@@ -141,7 +141,7 @@ def test_lifecycle_refusals() -> None:
     config = make_config()
     rig = Rig(config)
     gauge = create_gauge(config, rig.backend)
-    with pytest.raises(LifecycleError, match="request refused: the gauge is inactive"):
+    with pytest.raises(LifecycleError, match="request refused: the device is inactive"):
         gauge.request()
     gauge.activate()
     gauge.shutdown()
