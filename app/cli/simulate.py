@@ -18,12 +18,13 @@ import tempfile
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, TextIO
 
 import numpy as np
 
+from app.cli.profile_args import ProfileOptionError, add_profile_arguments, profile_from_args
 from app.cli.recipe_args import add_recipe_source
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
@@ -178,6 +179,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--realtime", action="store_true", help="run at real-time speed")
     parser.add_argument("--config", type=Path, help="machine configuration (TOML)")
     parser.add_argument("--db", type=Path, help="database with the recipes (default: a new one)")
+    add_profile_arguments(parser)
 
 
 def _recipe_from_args(args: argparse.Namespace, controller: MachineController) -> Recipe:
@@ -297,6 +299,26 @@ def _run_cycle(
     return report
 
 
+def _with_profile_options(
+    args: argparse.Namespace, recipe: Recipe, runtime: MachineRuntime
+) -> Recipe:
+    """The recipe with the side profile the options ask for (stored under a new name, so the
+    database's recipe is not changed), or the recipe itself without profile options."""
+    try:
+        profile = profile_from_args(args)
+    except ProfileOptionError as exc:
+        raise UsageError(str(exc)) from exc
+    if profile is None:
+        return recipe
+    variant = replace(
+        recipe, id=None, name=f"{recipe.name[:28]} ({profile.kind.value[:8]})", profile=profile
+    )
+    try:
+        return runtime.controller.store.save_recipe(variant)
+    except ValueError as exc:
+        raise UsageError(f"--profile: {exc}") from exc
+
+
 def simulate(
     args: argparse.Namespace, config: MachineConfig, db_path: Path, out: TextIO
 ) -> dict[str, Any]:
@@ -316,7 +338,7 @@ def simulate(
             )
         runtime.on_tick.append(watch.observe)
         runtime.start()
-        recipe = _recipe_from_args(args, runtime.controller)
+        recipe = _with_profile_options(args, _recipe_from_args(args, runtime.controller), runtime)
         assert recipe.id is not None
         runtime.controller.post(cmd.SelectRecipe(recipe.id))
         with _tick_pacing(runtime, args.realtime):

@@ -1,12 +1,15 @@
 """`stave solve`: the profile and tool path of one board, from the command line.
 
-    stave solve --length MM --width MM --length-ratio N/D --width-ratio N/D
+    stave solve --length MM --width MM [--length-ratio N/D] --width-ratio N/D
                 [--thickness MM] [--tilt DEG] [--tool-radius MM] [--machine-height MM]
-                [--config FILE] [--json]
+                [--profile KIND] [--exponent N] [--semi-axis-ratio S]
+                [--dxf FILE [--dxf-layer NAME]] [--config FILE] [--json]
 
 Human-readable by default; `--json` prints one JSON object (keys A, B, C, D, R, W1, points,
-arc_center_a, arc_center_b, toolpath). Invalid input exits with code 2 and one line on
-stderr naming the field(s) and the allowed range(s); never a traceback.
+arc_center_a, arc_center_b, toolpath; for the other profile kinds "profile_kind", W1, "edge"
+(side A's fitted lines and arcs) and toolpath). --length-ratio is needed by line-arc-line
+only; the profile options are those of `app.cli.profile_args`. Invalid input exits with
+code 2 and one line on stderr naming the field(s) and the allowed range(s); never a traceback.
 
 `app.cli` wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it standalone
 (`python -m app.cli.solve ...`). Numbers are read as text and converted here, so that
@@ -37,10 +40,13 @@ from app.cli.console import (
     emit,
     run_parsed,
 )
+from app.cli.profile_args import ProfileOptionError, add_profile_arguments, profile_from_args
+from app.data.recipe_profile import LINE_ARC_LINE
 from app.geometry.bevel import FixedTilt
+from app.geometry.biarc import FIT_TOLERANCE_MM
+from app.geometry.curved_profile import CurvedProfile, SideProfile
 from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits, validate_stave
-from app.geometry.profile import StaveProfile
 from app.geometry.ratio import Ratio
 from app.geometry.stave_cut import StaveSpec, cut_stave
 from app.geometry.toolpath import ArcSegment, ToolPath
@@ -156,7 +162,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--length", required=True, metavar="MM", help="stave length L")
     parser.add_argument("--width", required=True, metavar="MM", help="measured board width W")
     parser.add_argument(
-        "--length-ratio", required=True, metavar="N/D", help="lambda = L1 : L, e.g. 1/4 or 0.25"
+        "--length-ratio",
+        metavar="N/D",
+        help="lambda = L1 : L, e.g. 1/4 or 0.25 (line-arc-line only)",
     )
     parser.add_argument(
         "--width-ratio", required=True, metavar="N/D", help="k = W1 : W, e.g. 3/4 or 0.75"
@@ -175,12 +183,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="MM",
         help=f"table to tilt pivot Hm (default {PROCESS_DEFAULTS['machine_height_mm']:g})",
     )
+    add_profile_arguments(parser)
     parser.add_argument("--config", metavar="FILE", help="machine configuration file")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
 
-def _solve(args: argparse.Namespace) -> tuple[StaveProfile, ToolPath, tuple[str, str]]:
+def _solve(args: argparse.Namespace) -> tuple[SideProfile, ToolPath, tuple[str, str]]:
     settings = load_machine_settings(args.config)
+    try:
+        profile_choice = profile_from_args(args) or LINE_ARC_LINE
+    except ProfileOptionError as exc:
+        raise CliInputError(str(exc)) from exc
+    if args.length_ratio is None:
+        if profile_choice.spec.uses_length_ratio():
+            raise CliInputError(
+                "--length-ratio is required for the line_arc_line profile: "
+                "allowed a fraction like 1/4 or a decimal"
+            )
+        args.length_ratio = "0"
     process = dict(settings.process)
     if args.tool_radius is not None:
         process["tool_radius_mm"] = _parse_float(
@@ -206,7 +226,14 @@ def _solve(args: argparse.Namespace) -> tuple[StaveProfile, ToolPath, tuple[str,
     assert isinstance(length, float) and isinstance(width, float) and isinstance(tilt, float)
     assert length_ratio is not None and width_ratio is not None
     assert thickness is None or isinstance(thickness, float)
-    stave = StaveSpec(length, thickness, length_ratio.value, width_ratio.value, FixedTilt(tilt))
+    stave = StaveSpec(
+        length,
+        thickness,
+        length_ratio.value,
+        width_ratio.value,
+        FixedTilt(tilt),
+        profile_choice.spec,
+    )
     cut = cut_stave(stave, width, process, settings.limits)
     profile, toolpath = cut.profile, cut.toolpath
     return profile, toolpath, (str(length_ratio), str(width_ratio))
@@ -216,8 +243,30 @@ def _pair(point: tuple[float, float]) -> list[float]:
     return [point[0], point[1]]
 
 
-def to_json_object(profile: StaveProfile, toolpath: ToolPath) -> dict[str, object]:
+def _edge_json(profile: CurvedProfile) -> list[dict[str, object]]:
+    items: list[dict[str, object]] = []
+    for segment in profile.edge("A"):
+        item: dict[str, object] = {
+            "type": "arc" if isinstance(segment, ArcSegment) else "line",
+            "start": _pair(segment.start),
+            "end": _pair(segment.end),
+        }
+        if isinstance(segment, ArcSegment):
+            item["center"] = _pair(segment.center)
+            item["direction"] = "cw" if segment.clockwise else "ccw"
+        items.append(item)
+    return items
+
+
+def to_json_object(profile: SideProfile, toolpath: ToolPath) -> dict[str, object]:
     """The `--json` object."""
+    if isinstance(profile, CurvedProfile):
+        return {
+            "profile_kind": profile.kind.value,
+            "W1": profile.W1,
+            "edge": _edge_json(profile),
+            "toolpath": toolpath.to_json_list(),
+        }
     return {
         "A": profile.A,
         "B": profile.B,
@@ -232,9 +281,22 @@ def to_json_object(profile: StaveProfile, toolpath: ToolPath) -> dict[str, objec
     }
 
 
-def format_report(profile: StaveProfile, toolpath: ToolPath, ratios: tuple[str, str]) -> str:
+def _curved_lines(profile: CurvedProfile) -> list[str]:
+    arcs = [s for s in profile.edge("A") if isinstance(s, ArcSegment)]
+    tightest = min((s.radius_mm for s in arcs), default=math.inf)
+    return [
+        f"stave: L = {profile.length_mm:g} mm, W = {profile.width_mm:g} mm, "
+        f"profile {profile.kind.value}, width ratio {profile.width_ratio:g}",
+        f"  W1 = {profile.W1:12.6f} mm  head width",
+        f"  side A fitted as {len(profile.edge_a)} tangent lines and arcs "
+        f"(within {FIT_TOLERANCE_MM:g} mm), tightest radius {tightest:.3f} mm",
+    ]
+
+
+def format_report(profile: SideProfile, toolpath: ToolPath, ratios: tuple[str, str]) -> str:
     """The human-readable output."""
-    p = toolpath.params
+    if isinstance(profile, CurvedProfile):
+        return "\n".join([*_curved_lines(profile), *_toolpath_lines(toolpath)])
     lines = [
         f"stave: L = {profile.length_mm:g} mm, W = {profile.width_mm:g} mm, "
         f"length ratio {ratios[0]}, width ratio {ratios[1]}",
@@ -252,6 +314,12 @@ def format_report(profile: StaveProfile, toolpath: ToolPath, ratios: tuple[str, 
         lines.append(f"  {left} ({lx:12.6f}, {ly:12.6f})    {right} ({rx:12.6f}, {ry:12.6f})")
     (ax, ay), (bx, by) = profile.arc_center_a, profile.arc_center_b
     lines.append(f"  arc centre A ({ax:.6f}, {ay:.6f})    arc centre B ({bx:.6f}, {by:.6f})")
+    return "\n".join([*lines, *_toolpath_lines(toolpath)])
+
+
+def _toolpath_lines(toolpath: ToolPath) -> list[str]:
+    p = toolpath.params
+    lines: list[str] = []
     lines.append(
         f"tool path (machine X, Y mm; tilt deg): r = {p.tool_radius_mm:g} mm, "
         f"Hm = {p.machine_height_mm:g} mm, tilt = {p.tilt_deg:g} deg, "
@@ -278,7 +346,7 @@ def format_report(profile: StaveProfile, toolpath: ToolPath, ratios: tuple[str, 
         f"cutting length: side A {toolpath.cutting_length_mm('A'):.3f} mm, "
         f"side B {toolpath.cutting_length_mm('B'):.3f} mm (leads included)"
     )
-    return "\n".join(lines)
+    return lines
 
 
 def run(args: argparse.Namespace) -> int:

@@ -75,6 +75,7 @@ from app.data.pin_guard import (
 )
 from app.data.recipe import Recipe, TiltMode, recipe_to_mapping
 from app.data.recipe_files import load_recipe_file
+from app.data.recipe_profile import parse_recipe_profile
 from app.data.records import (
     AlarmEvent,
     AlarmEventFilter,
@@ -127,7 +128,8 @@ SYSTEM_USER = "system"
 
 _RECIPE_COLUMNS = (
     "id, name, length_mm, thickness_mm, length_ratio_num, length_ratio_den, width_ratio_num, "
-    "width_ratio_den, tilt_mode, tilt_deg, barrel_diameter_mm, barrel_perimeter_mm, note"
+    "width_ratio_den, tilt_mode, tilt_deg, barrel_diameter_mm, barrel_perimeter_mm, note, "
+    "profile_kind, profile_json"
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
@@ -149,6 +151,7 @@ def _recipe_from_row(row: sqlite3.Row) -> Recipe:
         barrel_diameter_mm=_opt_float(row["barrel_diameter_mm"]),
         barrel_perimeter_mm=_opt_float(row["barrel_perimeter_mm"]),
         note=str(row["note"]),
+        profile=parse_recipe_profile(row["profile_kind"], row["profile_json"]),
     )
 
 
@@ -690,8 +693,9 @@ class Database:
         cursor = conn.execute(
             "INSERT INTO recipes (name, length_mm, thickness_mm, length_ratio_num, "
             "length_ratio_den, width_ratio_num, width_ratio_den, tilt_mode, tilt_deg, "
-            "barrel_diameter_mm, barrel_perimeter_mm, note, created_at, created_by, "
-            "updated_at, updated_by) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            "barrel_diameter_mm, barrel_perimeter_mm, note, profile_kind, profile_json, "
+            "created_at, created_by, updated_at, updated_by) "
+            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
             (
                 *self._recipe_values(recipe),
                 now,
@@ -719,7 +723,7 @@ class Database:
             "UPDATE recipes SET name = ?, length_mm = ?, thickness_mm = ?, length_ratio_num = ?, "
             "length_ratio_den = ?, width_ratio_num = ?, width_ratio_den = ?, tilt_mode = ?, "
             "tilt_deg = ?, barrel_diameter_mm = ?, barrel_perimeter_mm = ?, note = ?, "
-            "updated_at = ?, updated_by = ? WHERE id = ?",
+            "profile_kind = ?, profile_json = ?, updated_at = ?, updated_by = ? WHERE id = ?",
             (*self._recipe_values(recipe), now, user_name, recipe.id),
         )
         self._log_recipe(conn, now, recipe.id, recipe.name, "update", user_name, before, recipe)
@@ -740,6 +744,8 @@ class Database:
             _opt_float(recipe.barrel_diameter_mm),
             _opt_float(recipe.barrel_perimeter_mm),
             recipe.note,
+            recipe.profile.kind.value,
+            recipe.profile.data_json(),
         )
 
     @staticmethod

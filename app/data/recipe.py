@@ -27,9 +27,22 @@ from dataclasses import dataclass
 from enum import Enum
 
 from app.data.errors import RecipeFormatError
+from app.data.recipe_profile import (
+    DATA_FIELD,
+    KIND_FIELD,
+    LINE_ARC_LINE,
+    RecipeProfile,
+    parse_recipe_profile,
+)
 from app.geometry.barrel import RoundBarrelTilt, barrel_width_errors
 from app.geometry.bevel import FixedTilt, TiltRule
-from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
+from app.geometry.errors import (
+    FieldError,
+    GeometryError,
+    format_value,
+    not_a_number,
+    out_of_range,
+)
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, validate_recipe_fields
 from app.geometry.ratio import Ratio
 from app.geometry.stave_cut import StaveSpec
@@ -60,6 +73,7 @@ class Recipe:
     barrel_diameter_mm: float | None
     barrel_perimeter_mm: float | None
     note: str = ""
+    profile: RecipeProfile = LINE_ARC_LINE
 
     @property
     def length_ratio_decimal(self) -> float:
@@ -92,6 +106,7 @@ class Recipe:
             self.length_ratio.value,
             self.width_ratio.value,
             self.tilt_rule,
+            self.profile.spec,
         )
 
 
@@ -192,6 +207,11 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
         allowed = f"at most {NOTE_MAX_CHARS} characters"
         message = f"note is {len(recipe.note)} characters long: allowed {allowed}"
         errors.append(FieldError("note", recipe.note, allowed, message))
+    if isinstance(recipe.profile, RecipeProfile):
+        errors.extend(recipe.profile.validate())
+    else:
+        message = f"{DATA_FIELD} = {format_value(recipe.profile)} is not a side profile"
+        errors.append(FieldError(DATA_FIELD, recipe.profile, "a side profile", message))
     return errors
 
 
@@ -209,7 +229,14 @@ REQUIRED_KEYS: tuple[str, ...] = (
     "width_ratio",
     "tilt_deg",
 )
-OPTIONAL_KEYS: tuple[str, ...] = ("tilt_mode", "barrel_diameter_mm", "barrel_perimeter_mm", "note")
+OPTIONAL_KEYS: tuple[str, ...] = (
+    "tilt_mode",
+    "barrel_diameter_mm",
+    "barrel_perimeter_mm",
+    "note",
+    KIND_FIELD,
+    DATA_FIELD,
+)
 ROW_KEYS: tuple[str, ...] = (*REQUIRED_KEYS[:5], "tilt_mode", "tilt_deg", *OPTIONAL_KEYS[1:])
 # An exported database id means nothing in another database: accepted and ignored.
 IGNORED_KEYS: frozenset[str] = frozenset({"id"})
@@ -334,6 +361,12 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
         else:
             errors.append(not_a_text("note", raw_note, f"at most {NOTE_MAX_CHARS} characters"))
 
+    profile = LINE_ARC_LINE
+    try:
+        profile = parse_recipe_profile(row.get(KIND_FIELD), row.get(DATA_FIELD))
+    except GeometryError as error:
+        errors.extend(error.errors)
+
     length_ratio, width_ratio = ratios["length_ratio"], ratios["width_ratio"]
     length_mm, thickness_mm = numbers_read["length_mm"], numbers_read["thickness_mm"]
     tilt_deg = numbers_read["tilt_deg"]
@@ -353,6 +386,7 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
         barrel_diameter_mm=numbers_read["barrel_diameter_mm"],
         barrel_perimeter_mm=numbers_read["barrel_perimeter_mm"],
         note=note,
+        profile=profile,
     )
 
 
@@ -369,4 +403,6 @@ def recipe_to_mapping(recipe: Recipe) -> dict[str, object]:
         "barrel_diameter_mm": recipe.barrel_diameter_mm,
         "barrel_perimeter_mm": recipe.barrel_perimeter_mm,
         "note": recipe.note,
+        KIND_FIELD: recipe.profile.kind.value,
+        DATA_FIELD: recipe.profile.data(),
     }

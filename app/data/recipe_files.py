@@ -37,7 +37,7 @@ JSON_FORMAT_VERSION = 1
 SUFFIXES = (".json", ".csv")
 
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+\s*$")
-_TEXT_KEYS = frozenset({"name", "note", "tilt_mode"})
+_TEXT_KEYS = frozenset({"name", "note", "tilt_mode", "profile_kind", "profile"})
 
 
 class RecipeFileError(DataError, ValueError):
@@ -188,6 +188,8 @@ def load_recipe_file(path: Path) -> list[Recipe]:
 def _csv_cell(value: object) -> str:
     if value is None:
         return ""
+    if isinstance(value, dict):  # the side profile's data: one JSON text cell
+        return json.dumps(value, ensure_ascii=False, sort_keys=True)
     if isinstance(value, float):
         if math.isfinite(value) and value.is_integer() and abs(value) < 1e15:
             return str(int(value))

@@ -27,6 +27,8 @@ class Migration:
 
 
 _ALARM_STATES = "'normal', 'active_unacked', 'active_acked', 'returned_unacked', 'shelved'"
+# Written out (not taken from ProfileKind): a released migration never changes.
+_PROFILE_KINDS = "'line_arc_line', 'single_arc', 'parabola', 'ellipse', 'superellipse', 'drawn'"
 
 MIGRATIONS: tuple[Migration, ...] = (
     Migration(
@@ -156,6 +158,20 @@ MIGRATIONS: tuple[Migration, ...] = (
             ) STRICT
             """,
             "INSERT INTO pin_guard (id, failures) VALUES (1, 0)",
+        ),
+    ),
+    Migration(
+        4,
+        "side profiles of any shape: the kind, and its parameters or drawing as JSON",
+        (
+            f"""
+            ALTER TABLE recipes ADD COLUMN profile_kind TEXT NOT NULL DEFAULT 'line_arc_line'
+                CHECK (profile_kind IN ({_PROFILE_KINDS}))
+            """,
+            """
+            ALTER TABLE recipes ADD COLUMN profile_json TEXT
+                CHECK (profile_json IS NULL OR json_valid(profile_json))
+            """,
         ),
     ),
 )

@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from app.geometry.curved_profile import SideProfile
 from app.geometry.profile import StaveProfile
 from app.geometry.segments import ArcSegment, LineSegment, Point, Segment
 from app.geometry.toolpath import SIDE_SIGN, ToolPath
@@ -31,7 +32,7 @@ class EdgeDeviation:
         return max(self.max_overcut_mm, self.max_undercut_mm)
 
 
-def profile_edge(profile: StaveProfile, side: str) -> tuple[Segment, ...]:
+def profile_edge(profile: SideProfile, side: str) -> tuple[Segment, ...]:
     """The stave's edge itself (profile frame) as segments, in cut order."""
     return profile.edge(side)
 

@@ -143,6 +143,16 @@ class CurvedProfile:
     def head_width_mm(self) -> float:
         return self.W1
 
+    @property
+    def D(self) -> float | None:
+        """Line-arc-line's rise of the straight section: none on a curve."""
+        return None
+
+    @property
+    def R(self) -> float | None:
+        """Line-arc-line's arc radius: none on a curve (its radius varies)."""
+        return None
+
     def edge(self, side: str) -> tuple[Segment, ...]:
         """The stave's edge in cut order: side A left to right, side B right to left."""
         if side == "A":
@@ -288,6 +298,39 @@ def solve_side_profile(
     return CurvedProfile(kind, length, width, k, head, chain, curves)
 
 
+@dataclass(frozen=True)
+class ProfileSpec:
+    """What a recipe says about the side's shape: the kind, a family's parameters (name,
+    value pairs), and for a drawn profile the checked drawing."""
+
+    kind: ProfileKind = ProfileKind.LINE_ARC_LINE
+    values: tuple[tuple[str, float], ...] = ()
+    drawn: DrawnShape | None = None
+
+    def uses_length_ratio(self) -> bool:
+        """Only line-arc-line has straight end sections; the other kinds ignore lambda."""
+        return self.kind is ProfileKind.LINE_ARC_LINE
+
+    def solve(
+        self,
+        length_mm: float,
+        width_mm: float,
+        width_ratio: float,
+        length_ratio: float,
+        limits: StaveLimits | None = None,
+    ) -> SideProfile:
+        return solve_side_profile(
+            self.kind,
+            length_mm,
+            width_mm,
+            width_ratio,
+            length_ratio,
+            dict(self.values),
+            self.drawn,
+            limits,
+        )
+
+
 def tangent_breaks_rad(chain: tuple[Segment, ...]) -> list[float]:
     """The change of direction at every joint of a chain (0 for a tangent-continuous one)."""
     breaks = []
@@ -301,6 +344,7 @@ def tangent_breaks_rad(chain: tuple[Segment, ...]) -> list[float]:
 __all__ = [
     "FIT_TOLERANCE_MM",
     "CurvedProfile",
+    "ProfileSpec",
     "SideProfile",
     "mirrored_side",
     "solve_side_profile",

@@ -1,14 +1,16 @@
 """The outline of the finished stave at table level, as points for drawing.
 
 Shared by the machine's plan preview and the recipe screen's preview, so both draw the same
-stave; the arcs are sampled at a fixed number of points, plenty for a few hundred pixels."""
+stave; each arc is sampled at a fixed number of points, plenty for a few hundred pixels (a
+fitted curve's arcs are short, so its outline is finer still)."""
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from app.geometry.profile import StaveProfile
+from app.geometry.curved_profile import SideProfile
+from app.geometry.segments import ArcSegment, Segment
 from app.geometry.toolpath import ToolPath
 
 Point = tuple[float, float]
@@ -34,12 +36,21 @@ def arc_points(
     ]
 
 
-def stave_outline(profile: StaveProfile, origin: Point) -> list[Point]:
+def _edge_points(edge: tuple[Segment, ...]) -> list[Point]:
+    points = [edge[0].start]
+    for segment in edge:
+        if isinstance(segment, ArcSegment):
+            points += arc_points(segment.center, segment.radius_mm, segment.start, segment.end)[1:]
+        else:
+            points.append(segment.end)
+    return points
+
+
+def stave_outline(profile: SideProfile, origin: Point) -> list[Point]:
     """The closed outline of the finished stave, in machine coordinates (origin = P0)."""
-    p = profile.points
-    side_a = [p["P1"], *arc_points(profile.arc_center_a, profile.R, p["P2"], p["P3"]), p["P4"]]
-    side_b = [p["P5"], *arc_points(profile.arc_center_b, profile.R, p["P6"], p["P7"]), p["P8"]]
-    return [(origin[0] + x, origin[1] + y) for x, y in (*side_a, *side_b, p["P1"])]
+    side_a = _edge_points(profile.edge("A"))
+    side_b = _edge_points(profile.edge("B"))
+    return [(origin[0] + x, origin[1] + y) for x, y in (*side_a, *side_b, side_a[0])]
 
 
 DRAWING_CHORD_MM = 0.2  # plenty for a drawing a few hundred pixels wide

@@ -14,24 +14,29 @@ from dataclasses import dataclass
 from enum import Enum
 
 from app.geometry.bevel import SideTilts, TiltRule
+from app.geometry.curved_profile import ProfileSpec, SideProfile
 from app.geometry.errors import FieldError, GeometryError, format_value
 from app.geometry.limits import StaveLimits, validate_stave
-from app.geometry.profile import StaveProfile, solve_profile
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
 from app.geometry.travel import check_toolpath_travel
+
+LINE_ARC_LINE = ProfileSpec()
+"""The side as it always was: two straight sections and an arc."""
 
 
 @dataclass(frozen=True)
 class StaveSpec:
     """What the geometry needs of a recipe: the stave's dimensions, its two ratios as decimals
-    and the rule that chooses the bevel from the measured width (``thickness_mm`` None: not
-    known, the bevels are then not checked against it)."""
+    the rule that chooses the bevel from the measured width (``thickness_mm`` None: not
+    known, the bevels are then not checked against it) and the side's shape (line-arc-line
+    unless the recipe chose another kind; only line-arc-line uses ``length_ratio``)."""
 
     length_mm: float
     thickness_mm: float | None
     length_ratio: float
     width_ratio: float
     tilt: TiltRule
+    profile: ProfileSpec = LINE_ARC_LINE
 
 
 class CutStage(Enum):
@@ -66,7 +71,7 @@ class StaveCut:
 
     width_mm: float
     tilts: SideTilts
-    profile: StaveProfile
+    profile: SideProfile
     toolpath: ToolPath
 
 
@@ -97,13 +102,14 @@ def cut_stave(
     except GeometryError as exc:
         raise StaveCutRefused(CutStage.TILT, exc.errors) from exc
     errors: list[FieldError] = []
+    length_ratio = stave.length_ratio if stave.profile.uses_length_ratio() else 0.0
     for tilt_deg in dict.fromkeys((tilts.a_deg, tilts.b_deg)):
         errors.extend(
             error
             for error in validate_stave(
                 stave.length_mm,
                 width_mm,
-                stave.length_ratio,
+                length_ratio,
                 stave.width_ratio,
                 limits,
                 thickness_mm=stave.thickness_mm,
@@ -114,8 +120,8 @@ def cut_stave(
     if errors:
         raise StaveCutRefused(CutStage.STAVE, errors, tilts)
     try:
-        profile = solve_profile(
-            stave.length_mm, width_mm, stave.length_ratio, stave.width_ratio, limits
+        profile = stave.profile.solve(
+            stave.length_mm, width_mm, stave.width_ratio, stave.length_ratio, limits
         )
         toolpath = build_toolpath(profile, toolpath_params(params, tilts))
     except GeometryError as exc:

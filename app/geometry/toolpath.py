@@ -47,11 +47,11 @@ from dataclasses import dataclass, fields
 from enum import Enum
 from itertools import pairwise
 
+from app.geometry.curved_profile import SideProfile
 from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number
 from app.geometry.errors import out_of_range as _out_of_range
 from app.geometry.polyline import PolylinePoint
 from app.geometry.polyline import to_polyline as _to_polyline
-from app.geometry.profile import StaveProfile
 from app.geometry.segments import ArcSegment, LineSegment, Point, Segment
 
 __all__ = [
@@ -206,90 +206,119 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
 class SideCut:
     """The compensated edge of one side in the profile frame, before the pivot shift.
 
-    Cut order: lead_in_start -> points[0] (line) -> points[1] (line) -> points[2] (arc about
-    arc_center, clockwise) -> points[3] (line) -> lead_out_end (line). points[0] == points[1]
-    and points[2] == points[3] when lambda = 0 (no straight sections).
+    Cut order: lead_in_start -> edge[0].start (line) -> the edge's lines and arcs (tangent to
+    each other) -> edge[-1].end -> lead_out_end (line).
     """
 
     side: str
     lead_in_start: Point
-    points: tuple[Point, Point, Point, Point]
-    arc_center: Point
+    edge: tuple[Segment, ...]
     lead_out_end: Point
-
-
-def _side_geometry(
-    profile: StaveProfile, side: str
-) -> tuple[tuple[Point, Point, Point, Point], Point, Point, Point]:
-    """Edge points in cut order, arc centre, and the unit directions of both straight parts."""
-    theta = profile.slope_rad
-    cos_t, sin_t = math.cos(theta), math.sin(theta)
-    p = profile.points
-    if side == "A":
-        return (
-            (p["P1"], p["P2"], p["P3"], p["P4"]),
-            profile.arc_center_a,
-            (cos_t, sin_t),
-            (cos_t, -sin_t),
-        )
-    if side == "B":
-        return (
-            (p["P5"], p["P6"], p["P7"], p["P8"]),
-            profile.arc_center_b,
-            (-cos_t, -sin_t),
-            (-cos_t, sin_t),
-        )
-    raise ValueError(f"side must be 'A' or 'B', got {side!r}")
 
 
 def _moved(point: Point, dx: float, dy: float) -> Point:
     return (point[0] + dx, point[1] + dy)
 
 
+def _left_normal(segment: Segment, s_mm: float, offset_mm: float) -> Point:
+    tx, ty = segment.tangent_at(s_mm)
+    return (-ty * offset_mm, tx * offset_mm)
+
+
+def _concave_refusal(segment: ArcSegment, side: str, offset_mm: float) -> FieldError:
+    x = min(segment.start[0], segment.end[0])
+    allowed = f"concave radius >= {offset_mm:.3f} mm"
+    message = (
+        f"profile: side {side} is concave with a radius of {segment.radius_mm:.3f} mm near "
+        f"x = {x:.3f} mm, tighter than the cutter's {offset_mm:.3f} mm "
+        "(tool_radius_mm / cos(tilt_deg)): the cutter cannot follow it"
+    )
+    return FieldError("profile", segment.radius_mm, allowed, message)
+
+
+def _offset_edge(edge: tuple[Segment, ...], offset_mm: float, side: str) -> tuple[Segment, ...]:
+    """Every piece moved outward along its normal by offset_mm (the tool centre's path).
+
+    The outward normal is the left-hand normal of the (clockwise) direction of travel; a
+    line stays a line, a clockwise arc (convex edge) grows by offset_mm about its centre, a
+    counter-clockwise one (concave edge) shrinks and must keep a radius above the offset.
+    Consecutive pieces share their joint point exactly, computed once from the common normal.
+    """
+    joints = [_moved(edge[0].start, *_left_normal(edge[0], 0.0, offset_mm))]
+    for piece in edge:
+        joints.append(_moved(piece.end, *_left_normal(piece, piece.length_mm, offset_mm)))
+    result: list[Segment] = []
+    for piece, start, end in zip(edge, joints, joints[1:], strict=False):
+        if isinstance(piece, LineSegment):
+            result.append(LineSegment(start, end, 0.0, 0.0, False, side))
+            continue
+        if not piece.clockwise and piece.radius_mm <= offset_mm * (1.0 + 1e-9):
+            raise GeometryError([_concave_refusal(piece, side, offset_mm)])
+        result.append(ArcSegment(start, end, piece.center, piece.clockwise, 0.0, 0.0, False, side))
+    return tuple(result)
+
+
+def _shifted_edge(edge: tuple[Segment, ...], dy: float) -> tuple[Segment, ...]:
+    """The original program's compensation: everything moved in y only."""
+    result: list[Segment] = []
+    for piece in edge:
+        start, end = _moved(piece.start, 0.0, dy), _moved(piece.end, 0.0, dy)
+        if isinstance(piece, LineSegment):
+            result.append(LineSegment(start, end, 0.0, 0.0, False, piece.side))
+        else:
+            centre = _moved(piece.center, 0.0, dy)
+            result.append(
+                ArcSegment(start, end, centre, piece.clockwise, 0.0, 0.0, False, piece.side)
+            )
+    return tuple(result)
+
+
 def compensated_side(
-    profile: StaveProfile,
+    profile: SideProfile,
     side: str,
     offset_mm: float,
     lead_mm: float,
     method: CompensationMethod = CompensationMethod.NORMAL,
 ) -> SideCut:
-    """The tool centre's path in plan view for one side, profile frame, no pivot shift."""
-    edge, centre, first_dir, last_dir = _side_geometry(profile, side)
+    """The tool centre's path in plan view for one side, profile frame, no pivot shift.
+
+    Raises GeometryError when a concave part of the side is tighter than the cutter.
+    """
+    if side not in SIDE_SIGN:
+        raise ValueError(f"side must be 'A' or 'B', got {side!r}")
+    edge = profile.edge(side)
     if method is CompensationMethod.NORMAL:
-        # The outward normal is the left-hand normal of the (clockwise) direction of travel.
-        first_normal = (-first_dir[1] * offset_mm, first_dir[0] * offset_mm)
-        last_normal = (-last_dir[1] * offset_mm, last_dir[0] * offset_mm)
-        q1 = _moved(edge[0], *first_normal)
-        q2 = _moved(edge[1], *first_normal)
-        q3 = _moved(edge[2], *last_normal)
-        q4 = _moved(edge[3], *last_normal)
-        arc_center = centre
+        moved = _offset_edge(edge, offset_mm, side)
     else:
-        dy = SIDE_SIGN[side] * offset_mm
-        q1, q2, q3, q4 = (_moved(point, 0.0, dy) for point in edge)
-        arc_center = _moved(centre, 0.0, dy)
+        moved = _shifted_edge(edge, SIDE_SIGN[side] * offset_mm)
+    first_dir = edge[0].tangent_at(0.0)
+    last_dir = edge[-1].tangent_at(edge[-1].length_mm)
+    first, last = moved[0].start, moved[-1].end
     return SideCut(
         side=side,
-        lead_in_start=_moved(q1, -first_dir[0] * lead_mm, -first_dir[1] * lead_mm),
-        points=(q1, q2, q3, q4),
-        arc_center=arc_center,
-        lead_out_end=_moved(q4, last_dir[0] * lead_mm, last_dir[1] * lead_mm),
+        lead_in_start=_moved(first, -first_dir[0] * lead_mm, -first_dir[1] * lead_mm),
+        edge=moved,
+        lead_out_end=_moved(last, last_dir[0] * lead_mm, last_dir[1] * lead_mm),
     )
 
 
 def _cut_segments(cut: SideCut, dx: float, dy: float, tilt_deg: float) -> list[Segment]:
     """The side's cutting moves, translated by (dx, dy) into machine coordinates."""
     start = _moved(cut.lead_in_start, dx, dy)
-    q1, q2, q3, q4 = (_moved(point, dx, dy) for point in cut.points)
+    first = _moved(cut.edge[0].start, dx, dy)
+    segments: list[Segment] = [LineSegment(start, first, tilt_deg, tilt_deg, True, cut.side)]
+    for piece in cut.edge:
+        a = segments[-1].end  # the very point the previous move ended at: no gap
+        b = _moved(piece.end, dx, dy)
+        if isinstance(piece, LineSegment):
+            segments.append(LineSegment(a, b, tilt_deg, tilt_deg, True, cut.side))
+        else:
+            centre = _moved(piece.center, dx, dy)
+            segments.append(
+                ArcSegment(a, b, centre, piece.clockwise, tilt_deg, tilt_deg, True, cut.side)
+            )
     end = _moved(cut.lead_out_end, dx, dy)
-    centre = _moved(cut.arc_center, dx, dy)
-    segments: list[Segment] = [LineSegment(start, q1, tilt_deg, tilt_deg, True, cut.side)]
-    if q2 != q1:
-        segments.append(LineSegment(q1, q2, tilt_deg, tilt_deg, True, cut.side))
-    segments.append(ArcSegment(q2, q3, centre, True, tilt_deg, tilt_deg, True, cut.side))
-    if q4 != q3:
-        segments.append(LineSegment(q3, q4, tilt_deg, tilt_deg, True, cut.side))
-    segments.append(LineSegment(q4, end, tilt_deg, tilt_deg, True, cut.side))
+    segments.append(LineSegment(segments[-1].end, end, tilt_deg, tilt_deg, True, cut.side))
     return segments
 
 
@@ -331,7 +360,7 @@ class KeepOutBox:
         return True
 
 
-def keep_out_box(profile: StaveProfile, params: ToolPathParams) -> KeepOutBox:
+def keep_out_box(profile: SideProfile, params: ToolPathParams) -> KeepOutBox:
     """The box around the raw board (L x W) that travel moves keep the pivot out of."""
     tilt_rad = math.radians(max(abs(params.home_z_deg), params.max_tilt_deg))
     across = params.tool_radius_mm / math.cos(tilt_rad) + params.machine_height_mm * math.tan(
@@ -392,7 +421,7 @@ class ToolPath:
 
     segments: tuple[Segment, ...]
     params: ToolPathParams
-    profile: StaveProfile
+    profile: SideProfile
 
     @property
     def length_mm(self) -> float:
@@ -454,7 +483,7 @@ def _home_error(params: ToolPathParams, box: KeepOutBox) -> FieldError:
     return FieldError("home_position_mm", value, allowed, message)
 
 
-def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMethod) -> ToolPath:
+def _build(profile: SideProfile, params: ToolPathParams, method: CompensationMethod) -> ToolPath:
     errors = validate_toolpath_params(params)
     if errors:
         raise GeometryError(errors)
@@ -502,7 +531,7 @@ def _build(profile: StaveProfile, params: ToolPathParams, method: CompensationMe
     return ToolPath(segments=tuple(segments), params=params, profile=profile)
 
 
-def build_toolpath(profile: StaveProfile, params: ToolPathParams) -> ToolPath:
+def build_toolpath(profile: SideProfile, params: ToolPathParams) -> ToolPath:
     """The tool path of both sides; raises GeometryError for invalid parameters.
 
     Also raised when the home position lies over the board (inside `keep_out_box`): no safe
@@ -511,6 +540,6 @@ def build_toolpath(profile: StaveProfile, params: ToolPathParams) -> ToolPath:
     return _build(profile, params, CompensationMethod.NORMAL)
 
 
-def build_original_toolpath(profile: StaveProfile, params: ToolPathParams) -> ToolPath:
+def build_original_toolpath(profile: SideProfile, params: ToolPathParams) -> ToolPath:
     """The same motion with the original program's y-only shift (for comparison only)."""
     return _build(profile, params, CompensationMethod.Y_SHIFT)

@@ -13,9 +13,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from app.data.recipe import Recipe
+from app.geometry.curved_profile import SideProfile
 from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
-from app.geometry.profile import StaveProfile
 from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, cut_stave
 from app.geometry.toolpath import ToolPath
 from app.machine.planner.limits import MotionLimits
@@ -46,7 +46,7 @@ class PlannedStave:
         return self.cut.tilts.a_deg
 
     @property
-    def profile(self) -> StaveProfile:
+    def profile(self) -> SideProfile:
         return self.cut.profile
 
     @property

@@ -18,6 +18,7 @@ from ezdxf.document import Drawing
 from ezdxf.filemanagement import new
 from ezdxf.layouts.layout import Modelspace
 
+from app.geometry.profile import StaveProfile
 from app.geometry.segments import ArcSegment, LineSegment, Segment
 from app.geometry.toolpath import ToolPath
 from app.programs.header import ProgramInfo
@@ -55,36 +56,25 @@ def _add_segment(space: Modelspace, segment: Segment, layer: str) -> None:
         space.add_line(segment.start, segment.end, dxfattribs=attribs)
 
 
+def _moved(segment: Segment, dx: float, dy: float) -> Segment:
+    start = (segment.start[0] + dx, segment.start[1] + dy)
+    end = (segment.end[0] + dx, segment.end[1] + dy)
+    if isinstance(segment, ArcSegment):
+        centre = (segment.center[0] + dx, segment.center[1] + dy)
+        return ArcSegment(start, end, centre, segment.clockwise, 0.0, 0.0, False, "")
+    return LineSegment(start, end, 0.0, 0.0, False, "")
+
+
 def _outline(toolpath: ToolPath) -> list[Segment]:
-    """The finished stave's edges (machine coordinates) as exact lines and arcs."""
+    """The finished stave's edges (machine coordinates) as exact lines and arcs: side A, the
+    right head, side B, the left head (any profile kind: its edges are lines and arcs)."""
     profile, params = toolpath.profile, toolpath.params
     x0, y0 = params.start_x_mm, params.start_y_mm
-
-    def at(name: str) -> Point:
-        x, y = profile.points[name]
-        return (x + x0, y + y0)
-
-    def centre(point: Point) -> Point:
-        return (point[0] + x0, point[1] + y0)
-
-    def line(a: str, b: str) -> LineSegment:
-        return LineSegment(at(a), at(b), 0.0, 0.0, False, "")
-
-    edges: list[Segment] = []
-    for first, arc_from, arc_to, last, arc_centre in (
-        ("P1", "P2", "P3", "P4", profile.arc_center_a),
-        ("P5", "P6", "P7", "P8", profile.arc_center_b),
-    ):
-        if at(first) != at(arc_from):
-            edges.append(line(first, arc_from))
-        edges.append(
-            ArcSegment(at(arc_from), at(arc_to), centre(arc_centre), True, 0.0, 0.0, False, "")
-        )
-        if at(arc_to) != at(last):
-            edges.append(line(arc_to, last))
-    edges.insert(len(edges) // 2, line("P4", "P5"))
-    edges.append(line("P8", "P1"))
-    return edges
+    side_a = [_moved(s, x0, y0) for s in profile.edge("A")]
+    side_b = [_moved(s, x0, y0) for s in profile.edge("B")]
+    right = LineSegment(side_a[-1].end, side_b[0].start, 0.0, 0.0, False, "")
+    left = LineSegment(side_b[-1].end, side_a[0].start, 0.0, 0.0, False, "")
+    return [*side_a, right, *side_b, left]
 
 
 def drawing(toolpath: ToolPath, info: ProgramInfo) -> Drawing:
@@ -101,7 +91,8 @@ def drawing(toolpath: ToolPath, info: ProgramInfo) -> Drawing:
         layer = f"TOOLPATH_{segment.side}" if segment.cutting else "TRAVEL"
         _add_segment(space, segment, layer)
     x0, y0 = toolpath.params.start_x_mm, toolpath.params.start_y_mm
-    for name, (x, y) in toolpath.profile.points.items():
+    named_points = toolpath.profile.points if isinstance(toolpath.profile, StaveProfile) else {}
+    for name, (x, y) in named_points.items():
         space.add_point((x + x0, y + y0), dxfattribs={"layer": "POINTS"})
         label = space.add_text(name, height=POINT_LABEL_HEIGHT_MM, dxfattribs={"layer": "POINTS"})
         label.set_placement((x + x0, y + y0))

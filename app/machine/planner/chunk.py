@@ -25,6 +25,14 @@ m2 = m3 = 0 and the box is exact; on the stave's arcs (radius of metres) the cur
 are a fraction of a percent. Because the box holds for *any* state inside it, the executor
 may re-plan s(t) from any state (override change, stop) and stay within the axis limits.
 
+Curvature steps. Where two pieces join with a change of curvature (line to arc; the arcs of a
+curve fitted with biarcs) c'' jumps by dk * n, and the normal acceleration steps by
+v^2 * dk * |n_i| at once. The drives receive one position per setpoint period, so the step
+is spread over one period: a jerk of v^2 * dk * |n_i| / T. The box keeps that below half of
+each axis's jerk limit (V^2 <= j_i T / (2 step_i)) and takes it off the jerk left for the
+tangential terms. On the stave's line-arc-line (radii of metres) neither binds; on a fitted
+curve with quick shoulders it is what keeps every axis inside its jerk limit.
+
 Why ruckig: given a box (V, A, J) and a rest-to-rest target, the time-optimal jerk-limited
 s(t) is exactly what ruckig computes (1 or 2 DOFs, "Time" synchronisation), in microseconds,
 including from a moving state whose velocity is above a newly lowered V (its brake profile
@@ -44,6 +52,9 @@ from app.machine.planner.limits import MAX_OVERRIDE_PCT, AxisLimits
 from app.machine.planner.otg import calculate
 from app.machine.planner.path import DerivativeBounds, Path, Point
 from app.machine.planner.trajectory import Phase, PlannerError
+
+CURVATURE_STEP_WINDOW_S = 0.004
+"""The setpoint period over which a curvature step reaches the drives (the machine's 4 ms)."""
 
 MIN_RUN_OVERRIDE_PCT = 1.0
 """Below this feed override the executor holds (decelerates to rest on the path) instead of
@@ -81,6 +92,8 @@ def path_box(
             caps.append(math.sqrt(limits.acceleration / (2.0 * m2)))
         if m3 > 0.0:
             caps.append((limits.jerk / (3.0 * m3)) ** (1.0 / 3.0))
+        if bounds.step[i] > 0.0:
+            caps.append(math.sqrt(limits.jerk * CURVATURE_STEP_WINDOW_S / (2.0 * bounds.step[i])))
     velocity = min(caps)
     if not math.isfinite(velocity) or velocity <= 0.0:
         raise PlannerError(f"no path velocity fits the limits (got {velocity!r} mm/s)")
@@ -95,8 +108,10 @@ def path_box(
     jerks = []
     for i, limits in enumerate(axes):
         m1, m2, m3 = bounds.first[i], bounds.second[i], bounds.third[i]
+        step_jerk = velocity**2 * bounds.step[i] / CURVATURE_STEP_WINDOW_S
         if m1 > 0.0:
-            jerks.append((limits.jerk - 3.0 * m2 * velocity * acceleration - m3 * velocity**3) / m1)
+            left = limits.jerk - step_jerk - 3.0 * m2 * velocity * acceleration
+            jerks.append((left - m3 * velocity**3) / m1)
     jerk = min(jerks)
     if not (acceleration > 0.0 and jerk > 0.0):
         raise PlannerError("the path's curvature leaves no acceleration or jerk for the feed")

@@ -35,18 +35,26 @@ _TWO_PI = 2.0 * math.pi
 
 @dataclass(frozen=True)
 class DerivativeBounds:
-    """Largest |d^k x_axis / ds^k| over a piece, for k = 1, 2, 3 and the axes X, Y."""
+    """Largest |d^k x_axis / ds^k| over a piece, for k = 1, 2, 3 and the axes X, Y.
+
+    ``step`` is the largest jump of |d^2 x_axis / ds^2| where two pieces join (a change of
+    curvature at a tangent joint: line to arc, or between the arcs of a fitted curve); zero
+    inside one piece."""
 
     first: tuple[float, float]
     second: tuple[float, float]
     third: tuple[float, float]
+    step: tuple[float, float] = (0.0, 0.0)
 
     def merge(self, other: DerivativeBounds) -> DerivativeBounds:
         def mx(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:
             return (max(a[0], b[0]), max(a[1], b[1]))
 
         return DerivativeBounds(
-            mx(self.first, other.first), mx(self.second, other.second), mx(self.third, other.third)
+            mx(self.first, other.first),
+            mx(self.second, other.second),
+            mx(self.third, other.third),
+            mx(self.step, other.step),
         )
 
 
@@ -290,8 +298,8 @@ class Path:
 
     def bounds(self) -> DerivativeBounds:
         result = self.pieces[0].bounds()
-        for piece in self.pieces[1:]:
-            result = result.merge(piece.bounds())
+        for previous, piece in zip(self.pieces, self.pieces[1:], strict=False):
+            result = result.merge(piece.bounds()).merge(_joint_step(previous, piece))
         return result
 
     def locate(self, s: float) -> tuple[int, float]:
@@ -328,13 +336,14 @@ class Path:
         return result
 
     def curvature_steps(self) -> tuple[float, ...]:
-        """Arc lengths where the curvature jumps (line <-> arc junctions, P2/P3/P6/P7).
+        """Arc lengths where a line meets an arc (P2/P3/P6/P7 of line-arc-line).
 
         At such a point the normal acceleration v^2 * kappa steps, so the jerk is unbounded
-        for an instant whatever the speed: the only places the jerk limit is not kept."""
+        for an instant whatever the speed: the only places the jerk limit is not kept. The
+        smaller steps between the arcs of a fitted curve are kept within it by the path box."""
         steps = []
         for index in range(1, len(self.pieces)):
-            if self.pieces[index].curvature != self.pieces[index - 1].curvature:
+            if _is_declared_step(self.pieces[index - 1], self.pieces[index]):
                 steps.append(self.offsets[index])
         return tuple(steps)
 
@@ -345,6 +354,26 @@ class Path:
             for i, p in enumerate(self.pieces)
             if p.cutting
         )
+
+
+def _is_declared_step(before: Piece, after: Piece) -> bool:
+    """A line meeting an arc: a curvature step of the profile itself (line-arc-line's P2, P3,
+    P6, P7, or a drawn line meeting a drawn arc), the declared exception to the jerk limit.
+    Between two arcs the step comes from fitting a smooth curve, and the planner keeps the
+    jerk there (see `planner.chunk`)."""
+    kinds = (isinstance(before, LinePiece), isinstance(after, LinePiece))
+    return kinds[0] != kinds[1] and before.curvature != after.curvature
+
+
+def _joint_step(before: Piece, after: Piece) -> DerivativeBounds:
+    """The jump of c'' at a tangent joint between two arcs: (k_after - k_before) times the
+    common normal (zero at a declared step and between lines)."""
+    zero = (0.0, 0.0)
+    if isinstance(before, LinePiece) or isinstance(after, LinePiece):
+        return DerivativeBounds(zero, zero, zero)
+    jump = abs(after.curvature - before.curvature)
+    tx, ty = after.start_tangent()
+    return DerivativeBounds(zero, zero, zero, (jump * abs(ty), jump * abs(tx)))
 
 
 def _start_point(piece: Piece) -> Point:
