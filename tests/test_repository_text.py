@@ -14,9 +14,12 @@ REPO = Path(__file__).resolve().parents[1]
 MACHINE_DOC = REPO / "docs" / "MACHINE.md"
 
 _SECTION_REFERENCE = re.compile(r"docs/MACHINE\.md\s+sections?\s+(\d+)(?:\s+and\s+(\d+))?")
-# "lead-in" and "lead-out" are machine words; "the lead" alone is not.
+# "lead", "lead-in" and "lead-out" are machine words (the lead's length); a person is "reported
+# to the lead", "asked by the lead".
 _OUTSIDE_REFERENCE = re.compile(
-    r"\bspec section\b|\bthe guide\b|\bthe brief\b|\bthe lead\b(?!-)|\bthe issue asks\b", re.I
+    r"\bspec section\b|\bthe guide\b|\bthe brief\b|\bthe issue asks\b"
+    r"|\b(?:to|by|tell|ask|asked) the lead\b(?![-'])",
+    re.I,
 )
 _ABSOLUTE_WORK_PATH = re.compile(r"(?<![\w.])/work/")
 
