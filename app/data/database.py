@@ -129,7 +129,7 @@ SYSTEM_USER = "system"
 _RECIPE_COLUMNS = (
     "id, name, length_mm, thickness_mm, length_ratio_num, length_ratio_den, width_ratio_num, "
     "width_ratio_den, tilt_mode, tilt_deg, barrel_diameter_mm, barrel_perimeter_mm, note, "
-    "profile_kind, profile_json"
+    "profile_kind, profile_json, barrel_minor_diameter_mm, target_width_mm"
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
@@ -152,6 +152,8 @@ def _recipe_from_row(row: sqlite3.Row) -> Recipe:
         barrel_perimeter_mm=_opt_float(row["barrel_perimeter_mm"]),
         note=str(row["note"]),
         profile=parse_recipe_profile(row["profile_kind"], row["profile_json"]),
+        barrel_minor_diameter_mm=_opt_float(row["barrel_minor_diameter_mm"]),
+        target_width_mm=_opt_float(row["target_width_mm"]),
     )
 
 
@@ -694,8 +696,9 @@ class Database:
             "INSERT INTO recipes (name, length_mm, thickness_mm, length_ratio_num, "
             "length_ratio_den, width_ratio_num, width_ratio_den, tilt_mode, tilt_deg, "
             "barrel_diameter_mm, barrel_perimeter_mm, note, profile_kind, profile_json, "
+            "barrel_minor_diameter_mm, target_width_mm, "
             "created_at, created_by, updated_at, updated_by) "
-            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
             (
                 *self._recipe_values(recipe),
                 now,
@@ -723,7 +726,8 @@ class Database:
             "UPDATE recipes SET name = ?, length_mm = ?, thickness_mm = ?, length_ratio_num = ?, "
             "length_ratio_den = ?, width_ratio_num = ?, width_ratio_den = ?, tilt_mode = ?, "
             "tilt_deg = ?, barrel_diameter_mm = ?, barrel_perimeter_mm = ?, note = ?, "
-            "profile_kind = ?, profile_json = ?, updated_at = ?, updated_by = ? WHERE id = ?",
+            "profile_kind = ?, profile_json = ?, barrel_minor_diameter_mm = ?, "
+            "target_width_mm = ?, updated_at = ?, updated_by = ? WHERE id = ?",
             (*self._recipe_values(recipe), now, user_name, recipe.id),
         )
         self._log_recipe(conn, now, recipe.id, recipe.name, "update", user_name, before, recipe)
@@ -746,6 +750,8 @@ class Database:
             recipe.note,
             recipe.profile.kind.value,
             recipe.profile.data_json(),
+            _opt_float(recipe.barrel_minor_diameter_mm),
+            _opt_float(recipe.target_width_mm),
         )
 
     @staticmethod

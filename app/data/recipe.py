@@ -6,13 +6,18 @@ decimals derived), and how the bevel is chosen:
 
 * ``TiltMode.FIXED``: every board is bevelled at ``tilt_deg``.
 * ``TiltMode.BARREL``: the bevel is computed for each board from its measured width and the
-  barrel's belly diameter (``app.geometry.barrel``), so narrow and wide boards of one barrel
-  all close. ``tilt_deg`` is then the nominal tilt the recipe screen shows (for a typical
-  board); it is validated like a fixed tilt but the cut uses the computed value.
+  barrel's belly section, so narrow and wide boards of one barrel all close. The barrel is
+  round (``barrel_diameter_mm``: both sides asin(W/D), ``app.geometry.barrel``) or oval
+  (``barrel_diameter_mm`` the long belly axis, ``barrel_minor_diameter_mm`` the short one): on
+  an oval the two sides of a stave get different bevels, which depend on where the stave sits
+  in the barrel (``app.geometry.barrel_section``). ``tilt_deg`` is then the nominal tilt the
+  recipe screen shows (for a typical board); it is validated like a fixed tilt but the cut uses
+  the computed value.
 
 Validation is the geometry's (``validate_recipe_fields``: length, thickness, ratios, tilt and
 the machine's limits) plus what only a stored recipe has: a name, the tilt mode, the barrel's
-belly diameter and perimeter, the note. Name uniqueness needs the database and is checked there.
+belly diameters and perimeter, a fixed belly width (``target_width_mm``: staves made to stock,
+cut centred on a wider board), the note. Name uniqueness needs the database and is checked there.
 
 The row format (JSON object or CSV line, also what ``stave simulate --recipe-file`` reads) is
 :data:`ROW_KEYS`; :func:`recipe_from_mapping` reads it and :func:`recipe_to_mapping` writes it.
@@ -35,6 +40,7 @@ from app.data.recipe_profile import (
     parse_recipe_profile,
 )
 from app.geometry.barrel import RoundBarrelTilt, barrel_width_errors
+from app.geometry.barrel_section import MAX_AXIS_RATIO, BarrelSection, PlacedBarrelTilt
 from app.geometry.bevel import FixedTilt, TiltRule
 from app.geometry.errors import (
     FieldError,
@@ -58,6 +64,14 @@ class TiltMode(Enum):
     BARREL = "barrel"  # computed per board from the barrel's belly diameter and the width
 
 
+class BarrelType(Enum):
+    """What the recipe's bevel follows (derived from the tilt mode and the diameters)."""
+
+    FIXED_TILT = "fixed"
+    ROUND = "round"
+    OVAL = "oval"
+
+
 @dataclass(frozen=True)
 class Recipe:
     """One stored recipe. ``id`` is None until the database has stored it."""
@@ -74,6 +88,25 @@ class Recipe:
     barrel_perimeter_mm: float | None
     note: str = ""
     profile: RecipeProfile = LINE_ARC_LINE
+    barrel_minor_diameter_mm: float | None = None
+    target_width_mm: float | None = None
+    """Cut every board to this belly width (staves made to stock; None: the board's width)."""
+
+    @property
+    def barrel_type(self) -> BarrelType:
+        """Fixed tilt, round barrel or oval barrel: what the recipe screen offers."""
+        if self.tilt_mode is not TiltMode.BARREL:
+            return BarrelType.FIXED_TILT
+        return BarrelType.ROUND if self.barrel_minor_diameter_mm is None else BarrelType.OVAL
+
+    @property
+    def barrel_section(self) -> BarrelSection | None:
+        """The belly cross-section the staves are placed on (None: fixed tilt, or no diameter)."""
+        if self.tilt_mode is not TiltMode.BARREL or self.barrel_diameter_mm is None:
+            return None
+        minor = self.barrel_minor_diameter_mm
+        major = self.barrel_diameter_mm
+        return BarrelSection(major / 2.0, (major if minor is None else minor) / 2.0)
 
     @property
     def length_ratio_decimal(self) -> float:
@@ -93,6 +126,10 @@ class Recipe:
     def tilt_rule(self) -> TiltRule:
         """How this recipe bevels a board of a measured width (``app.geometry.barrel`` has the
         barrel's mathematics)."""
+        if self.barrel_type is BarrelType.OVAL:
+            section = self.barrel_section
+            assert section is not None  # an oval has both diameters
+            return PlacedBarrelTilt(section)  # the first stave's place; a barrel set moves it
         if self.tilt_mode is TiltMode.BARREL:
             return RoundBarrelTilt(self.barrel_diameter_mm)
         return FixedTilt(self.tilt_deg)
@@ -183,6 +220,37 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
     _check_optional_positive(
         "barrel_perimeter_mm", recipe.barrel_perimeter_mm, math.pi * d_low, math.pi * d_high, errors
     )
+    minor = _check_optional_positive(
+        "barrel_minor_diameter_mm", recipe.barrel_minor_diameter_mm, d_low, d_high, errors
+    )
+    if diameter is not None and minor is not None:
+        _check_oval(diameter, minor, errors)
+    if minor is not None and recipe.tilt_mode is TiltMode.FIXED:
+        allowed = "empty with tilt_mode 'fixed'; an oval barrel needs tilt_mode 'barrel'"
+        message = (
+            f"barrel_minor_diameter_mm = {format_value(minor)} has no use with a fixed tilt: "
+            f"allowed {allowed}"
+        )
+        errors.append(FieldError("barrel_minor_diameter_mm", minor, allowed, message))
+    target = _check_optional_positive(
+        "target_width_mm",
+        recipe.target_width_mm,
+        limits.min_head_width_mm,
+        limits.max_width_mm,
+        errors,
+    )
+    if target is not None and isinstance(recipe.width_ratio, Ratio):
+        head = target * recipe.width_ratio.value
+        if head < limits.min_head_width_mm:
+            allowed = (
+                f"target_width_mm >= {format_value(limits.min_head_width_mm)} / width ratio "
+                f"= {limits.min_head_width_mm / recipe.width_ratio.value:.1f} mm"
+            )
+            errors.append(
+                out_of_range(
+                    "target_width_mm", target, allowed, f"the head would be {head:.1f} mm wide"
+                )
+            )
 
     if not isinstance(recipe.tilt_mode, TiltMode):
         allowed = " or ".join(mode.value for mode in TiltMode)
@@ -215,6 +283,18 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
     return errors
 
 
+def _check_oval(major_mm: float, minor_mm: float, errors: list[FieldError]) -> None:
+    """An oval's short belly axis: no longer than the long one, at least half of it."""
+    low = major_mm / MAX_AXIS_RATIO
+    if not low <= minor_mm <= major_mm:
+        allowed = (
+            f"{format_value(low)} <= barrel_minor_diameter_mm <= barrel_diameter_mm = "
+            f"{format_value(major_mm)} mm"
+        )
+        note = "the oval's short belly axis; the long one is barrel_diameter_mm"
+        errors.append(out_of_range("barrel_minor_diameter_mm", minor_mm, allowed, note))
+
+
 def _ratio_value(ratio: object) -> object:
     return ratio.value if isinstance(ratio, Ratio) else ratio
 
@@ -232,7 +312,9 @@ REQUIRED_KEYS: tuple[str, ...] = (
 OPTIONAL_KEYS: tuple[str, ...] = (
     "tilt_mode",
     "barrel_diameter_mm",
+    "barrel_minor_diameter_mm",
     "barrel_perimeter_mm",
+    "target_width_mm",
     "note",
     KIND_FIELD,
     DATA_FIELD,
@@ -328,7 +410,12 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
             numbers_read[key] = None
         else:
             numbers_read[key] = _read_number(key, value, errors)
-    for key in ("barrel_diameter_mm", "barrel_perimeter_mm"):
+    for key in (
+        "barrel_diameter_mm",
+        "barrel_minor_diameter_mm",
+        "barrel_perimeter_mm",
+        "target_width_mm",
+    ):
         value = row.get(key)
         numbers_read[key] = None if _is_blank(value) else _read_number(key, value, errors)
 
@@ -387,6 +474,8 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
         barrel_perimeter_mm=numbers_read["barrel_perimeter_mm"],
         note=note,
         profile=profile,
+        barrel_minor_diameter_mm=numbers_read["barrel_minor_diameter_mm"],
+        target_width_mm=numbers_read["target_width_mm"],
     )
 
 
@@ -401,7 +490,9 @@ def recipe_to_mapping(recipe: Recipe) -> dict[str, object]:
         "tilt_mode": recipe.tilt_mode.value,
         "tilt_deg": recipe.tilt_deg,
         "barrel_diameter_mm": recipe.barrel_diameter_mm,
+        "barrel_minor_diameter_mm": recipe.barrel_minor_diameter_mm,
         "barrel_perimeter_mm": recipe.barrel_perimeter_mm,
+        "target_width_mm": recipe.target_width_mm,
         "note": recipe.note,
         KIND_FIELD: recipe.profile.kind.value,
         DATA_FIELD: recipe.profile.data(),

@@ -174,6 +174,16 @@ MIGRATIONS: tuple[Migration, ...] = (
             """,
         ),
     ),
+    Migration(
+        5,
+        "oval barrels (the short belly axis) and fixed belly widths in recipes",
+        (
+            "ALTER TABLE recipes ADD COLUMN barrel_minor_diameter_mm REAL "
+            "CHECK (barrel_minor_diameter_mm IS NULL OR barrel_minor_diameter_mm > 0)",
+            "ALTER TABLE recipes ADD COLUMN target_width_mm REAL "
+            "CHECK (target_width_mm IS NULL OR target_width_mm > 0)",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

@@ -26,6 +26,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from app.geometry.bevel import SideTilts
 from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
 from app.geometry.limits import _finite as finite_number
@@ -337,3 +338,37 @@ def validate_widths(
         elif not 0.0 < width <= limits.max_width_mm:
             errors.append(out_of_range("width_mm", width, allowed))
     return errors
+
+
+@dataclass(frozen=True)
+class PlacedBarrelTilt:
+    """The two bevels of the board placed next around a barrel, its first joint at ``start_t_rad``.
+
+    Why a rule of its own: on an oval the bevels depend on where the stave sits, not only on
+    its width, so a barrel being raised hands the cut the position of the next stave. Side A
+    is the stave's first joint (it meets the stave before), side B its second.
+    """
+
+    section: BarrelSection
+    start_t_rad: float = 0.0
+
+    def tilts_for_width(self, width_mm: float, limits: StaveLimits) -> SideTilts:
+        errors = validate_widths([width_mm], limits)
+        if errors:
+            raise GeometryError(errors)
+        stave = place_stave(self.section, 1, self.start_t_rad, float(width_mm))
+        low, high = limits.min_tilt_deg, limits.max_tilt_deg
+        allowed = f"{format_value(low)} <= tilt <= {format_value(high)} deg"
+        for field, bevel in (
+            ("tilt_a_deg", stave.bevel_start_deg),
+            ("tilt_b_deg", stave.bevel_end_deg),
+        ):
+            if not low <= bevel <= high:
+                note = (
+                    f"the bevel of a {format_value(width_mm)} mm stave at "
+                    f"t = {stave.start_angle_deg:.3f} deg of this barrel"
+                )
+                errors.append(out_of_range(field, round(bevel, 3), allowed, note))
+        if errors:
+            raise GeometryError(errors)
+        return SideTilts(stave.bevel_start_deg, stave.bevel_end_deg)

@@ -172,6 +172,7 @@ def test_forward_migration_keeps_the_data(tmp_path: Path) -> None:
         assert database.schema_version == SCHEMA_VERSION
         [old] = database.list_recipes()  # not a new database: no samples added
         assert (old.name, old.width_ratio) == ("Old", Ratio(3, 4))
+        assert (old.barrel_minor_diameter_mm, old.target_width_mm) == (None, None)  # v5
         users = {u.role: u for u in database.list_users()}
         assert users == {}  # v1 files made by older software had their own users
         assert database.recipe_history() == []  # the v2 table exists and works
