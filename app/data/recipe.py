@@ -144,6 +144,7 @@ class Recipe:
             self.width_ratio.value,
             self.tilt_rule,
             self.profile.spec,
+            self.target_width_mm,
         )
 
 

@@ -10,12 +10,12 @@ Pure computation (no devices, no time): motion planning is the machine's, on top
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 
 from app.geometry.bevel import SideTilts, TiltRule
 from app.geometry.curved_profile import ProfileSpec, SideProfile
-from app.geometry.errors import FieldError, GeometryError, format_value
+from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
 from app.geometry.limits import StaveLimits, validate_stave
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
 from app.geometry.travel import check_toolpath_travel
@@ -37,6 +37,9 @@ class StaveSpec:
     width_ratio: float
     tilt: TiltRule
     profile: ProfileSpec = LINE_ARC_LINE
+    target_width_mm: float | None = None
+    """Cut the stave to this belly width, centred on a board at least that wide (None: the
+    board's own width). The closing stave of a barrel and staves made to stock use it."""
 
 
 class CutStage(Enum):
@@ -67,15 +70,27 @@ class StaveCutRefused(GeometryError):
 
 @dataclass(frozen=True)
 class StaveCut:
-    """A board that can be cut: its width, bevels, solved profile and checked tool path."""
+    """A board that can be cut: its width, bevels, solved profile and checked tool path.
+
+    ``width_mm`` is the stave's belly width after the cut, ``board_width_mm`` the board's
+    measured one (wider when the stave is cut to a target width)."""
 
     width_mm: float
     tilts: SideTilts
     profile: SideProfile
     toolpath: ToolPath
+    board_width_mm: float | None = None
+
+    @property
+    def depth_per_side_mm(self) -> float:
+        """The most material taken off one side: at the heads, (board - head width) / 2."""
+        board = self.width_mm if self.board_width_mm is None else self.board_width_mm
+        return (board - self.profile.W1) / 2.0
 
 
-def toolpath_params(params: Mapping[str, float], tilts: SideTilts) -> ToolPathParams:
+def toolpath_params(
+    params: Mapping[str, float], tilts: SideTilts, board_width_mm: float | None = None
+) -> ToolPathParams:
     """The tool path's parameters from the system parameters and the bevels.
 
     Raises GeometryError for a missing or non-numeric parameter. Side A is cut at +a_deg,
@@ -89,7 +104,9 @@ def toolpath_params(params: Mapping[str, float], tilts: SideTilts) -> ToolPathPa
     if errors:
         raise GeometryError(errors)
     b_deg = None if tilts.symmetric else tilts.b_deg
-    return ToolPathParams.from_parameters(params, tilts.a_deg, b_deg)
+    return replace(
+        ToolPathParams.from_parameters(params, tilts.a_deg, b_deg), board_width_mm=board_width_mm
+    )
 
 
 def cut_stave(
@@ -97,6 +114,12 @@ def cut_stave(
 ) -> StaveCut:
     """Compose the cut of one board ``width_mm`` wide; raises StaveCutRefused (every reason,
     one line each, naming the field, the value and what is allowed), never anything else."""
+    board_mm = width_mm
+    if stave.target_width_mm is not None:
+        target_errors = _target_errors(width_mm, stave.target_width_mm, limits)
+        if target_errors:
+            raise StaveCutRefused(CutStage.STAVE, target_errors)
+        width_mm = stave.target_width_mm
     try:
         tilts = stave.tilt.tilts_for_width(width_mm, limits)
     except GeometryError as exc:
@@ -123,10 +146,27 @@ def cut_stave(
         profile = stave.profile.solve(
             stave.length_mm, width_mm, stave.width_ratio, stave.length_ratio, limits
         )
-        toolpath = build_toolpath(profile, toolpath_params(params, tilts))
+        board = None if board_mm == width_mm else float(board_mm)
+        toolpath = build_toolpath(profile, toolpath_params(params, tilts, board))
     except GeometryError as exc:
         raise StaveCutRefused(CutStage.TOOLPATH, exc.errors, tilts) from exc
     travel = check_toolpath_travel(toolpath, limits)
     if travel:
         raise StaveCutRefused(CutStage.TRAVEL, travel, tilts)
-    return StaveCut(float(width_mm), tilts, profile, toolpath)
+    return StaveCut(float(width_mm), tilts, profile, toolpath, float(board_mm))
+
+
+def _target_errors(board_mm: object, target_mm: float, limits: StaveLimits) -> list[FieldError]:
+    """A board narrower than the stave it should become cannot be cut to it."""
+    allowed = (
+        f"target_width_mm = {format_value(target_mm)} <= width <= "
+        f"{format_value(limits.max_width_mm)} mm"
+    )
+    if isinstance(board_mm, bool) or not isinstance(board_mm, int | float):
+        return [not_a_number("width_mm", board_mm, allowed)]
+    if not board_mm >= target_mm:  # NaN too
+        note = "the board is too narrow for the stave it should become"
+        return [out_of_range("width_mm", board_mm, allowed, note)]
+    if board_mm > limits.max_width_mm:
+        return [out_of_range("width_mm", board_mm, allowed)]
+    return []

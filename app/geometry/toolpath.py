@@ -107,6 +107,9 @@ class ToolPathParams:
     home_z_deg: float
     tilt_clearance_mm: float
     tilt_b_deg: float | None = None
+    board_width_mm: float | None = None
+    """The raw board's width when the stave is cut narrower (to a target width); travel
+    moves keep clear of the whole board. None: the board is as wide as the stave."""
 
     def side_tilt_deg(self, side: str) -> float:
         """The bevel of side "A" or "B" (>= 0; side B is cut at minus this)."""
@@ -143,7 +146,8 @@ class ToolPathParams:
     @classmethod
     def system_parameter_names(cls) -> tuple[str, ...]:
         """The fields that are system parameters (the bevels come from the recipe and board)."""
-        return tuple(f.name for f in fields(cls) if f.name not in ("tilt_deg", "tilt_b_deg"))
+        board = ("tilt_deg", "tilt_b_deg", "board_width_mm")
+        return tuple(f.name for f in fields(cls) if f.name not in board)
 
     @property
     def pivot_shift_mm(self) -> float:
@@ -157,7 +161,7 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
     values: dict[str, float] = {}
     for name in ToolPathParams.__dataclass_fields__:
         value = getattr(params, name)
-        if name == "tilt_b_deg" and value is None:
+        if name in ("tilt_b_deg", "board_width_mm") and value is None:
             continue
         is_number = isinstance(value, int | float) and not isinstance(value, bool)
         if not (is_number and math.isfinite(value)):
@@ -366,7 +370,8 @@ def keep_out_box(profile: SideProfile, params: ToolPathParams) -> KeepOutBox:
     across = params.tool_radius_mm / math.cos(tilt_rad) + params.machine_height_mm * math.tan(
         tilt_rad
     )
-    half_width = profile.width_mm / 2.0
+    board_mm = params.board_width_mm
+    half_width = max(profile.width_mm, 0.0 if board_mm is None else board_mm) / 2.0
     return KeepOutBox(
         x_min=-params.tool_radius_mm,
         x_max=profile.length_mm + params.tool_radius_mm,

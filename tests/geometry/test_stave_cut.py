@@ -15,7 +15,7 @@ from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
 from app.geometry.outline import stave_drawing
 from app.geometry.profile import solve_profile
 from app.geometry.stave_cut import CutStage, StaveCutRefused, StaveSpec, cut_stave
-from app.geometry.toolpath import ToolPathParams, build_toolpath
+from app.geometry.toolpath import ToolPathParams, build_toolpath, keep_out_box
 from app.geometry.travel import check_toolpath_travel
 
 STAVE = StaveSpec(1000.0, 30.0, 0.25, 0.75, FixedTilt(3.5))
@@ -122,3 +122,28 @@ def test_the_drawing_follows_the_tool_path() -> None:
     assert len(drawing.toolpath_xy) == len(drawing.cutting_mask)
     assert any(drawing.cutting_mask) and not all(drawing.cutting_mask)
     assert drawing.toolpath_xy[0] == (PROCESS_DEFAULTS["home_x_mm"], PROCESS_DEFAULTS["home_y_mm"])
+
+
+def test_a_target_width_is_cut_centred_on_a_wider_board() -> None:
+    target = replace(STAVE, target_width_mm=120.0)
+    cut = cut_stave(target, 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    assert (cut.width_mm, cut.board_width_mm) == (120.0, 150.0)
+    assert cut.profile == solve_profile(1000.0, 120.0, 0.25, 0.75)  # centred: y = 0 in the middle
+    assert cut.depth_per_side_mm == (150.0 - 90.0) / 2.0
+    # Travel keeps clear of the whole 150 mm board, not only of the 120 mm stave.
+    params = cut.toolpath.params
+    assert params.board_width_mm == 150.0
+    box = keep_out_box(cut.profile, params)
+    assert box == keep_out_box(
+        solve_profile(1000.0, 150.0, 0.25, 0.75), replace(params, board_width_mm=None)
+    )
+    ordinary = cut_stave(STAVE, 150.0, PROCESS_DEFAULTS, DEFAULT_LIMITS)
+    assert ordinary.toolpath.params.board_width_mm is None
+    assert ordinary.depth_per_side_mm == (150.0 - 112.5) / 2.0
+
+
+@pytest.mark.parametrize(("board", "text"), [(110.0, "too narrow"), (290.0, "<= 280 mm")])
+def test_a_board_outside_the_target_range_is_refused(board: float, text: str) -> None:
+    exc = refusal(replace(STAVE, target_width_mm=120.0), board)
+    assert exc.stage is CutStage.STAVE and exc.fields == ("width_mm",)
+    assert "120 <= width <= 280 mm" in str(exc) and text in str(exc)
