@@ -145,6 +145,7 @@ class Watch:
 @dataclass
 class CycleReport:
     width_mm: float
+    measured_width_mm: float | None = None  # what the gauge read, the width the profile is cut for
     result: str = "ok"
     alarms: list[str] = field(default_factory=list)
     D_mm: float | None = None
@@ -289,6 +290,7 @@ def _run_cycle(
         piece, cycle = c.finished_cycles[-1]
         o = cycle.outcome
         report.D_mm, report.R_mm = o.d_mm, o.r_mm
+        report.measured_width_mm = o.width_mm
         report.cycle_time_s = piece.cycle_time_s
         if report.result == "ok":
             report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
@@ -382,6 +384,7 @@ def simulate(
 def _cycle_json(r: CycleReport) -> dict[str, Any]:
     return {
         "width_mm": r.width_mm,
+        "measured_width_mm": r.measured_width_mm,
         "D_mm": r.D_mm,
         "R_mm": r.R_mm,
         "cycle_time_s": r.cycle_time_s,
