@@ -15,6 +15,7 @@ import sys
 from collections.abc import Sequence
 
 from app import __version__
+from app.cli.console import OneLineParser
 
 # subcommand -> (module with add_arguments(parser) and run(args) -> int, one-line help)
 SUBCOMMANDS: dict[str, tuple[str, str]] = {
@@ -38,7 +39,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args_list = list(sys.argv[1:] if argv is None else argv)
     parser = argparse.ArgumentParser(prog="stave", description=__doc__.splitlines()[0])
     parser.add_argument("--version", action="version", version=f"stave {__version__}")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    # Each tool's usage errors are one line, exit 2, like every other bad input.
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=OneLineParser)
     chosen = args_list[0] if args_list else ""
     for name, (module_name, help_text) in SUBCOMMANDS.items():
         sub_parser = sub.add_parser(name, help=help_text, description=help_text)

@@ -20,6 +20,7 @@ import sys
 from collections.abc import Mapping
 from pathlib import Path
 
+from app.cli.console import EXIT_INVALID_INPUT, EXIT_OK, CliInputError, emit
 from app.cli.recipe_args import add_recipe_source
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.errors import DataError
@@ -35,13 +36,6 @@ from app.machine.program_export import (
     export_program,
 )
 from app.programs.moves import check_chord_error
-
-EXIT_OK = 0
-EXIT_INVALID_INPUT = 2
-
-
-class UsageError(Exception):
-    """Bad command-line input: one line, exit code 2."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -81,7 +75,7 @@ def _number(option: str, text: str, allowed: str, ok: bool | None = None) -> flo
     except ValueError:
         value = math.nan
     if not math.isfinite(value) or ok is False:
-        raise UsageError(f"{option} = {text!r} is not allowed: {allowed}")
+        raise CliInputError(f"{option} = {text!r} is not allowed: {allowed}")
     return value
 
 
@@ -104,18 +98,18 @@ def _recipe_and_parameters(
         try:
             recipes = load_recipe_file(args.recipe_file)
         except (DataError, OSError, ValueError) as exc:
-            raise UsageError(f"--recipe-file: {exc}") from exc
+            raise CliInputError(f"--recipe-file: {exc}") from exc
         if not recipes:
-            raise UsageError(f"--recipe-file {args.recipe_file}: no recipe in the file")
+            raise CliInputError(f"--recipe-file {args.recipe_file}: no recipe in the file")
         recipe = recipes[0]
         errors = recipe.validate(limits)
         if errors:
-            raise UsageError(f"--recipe-file: {errors[0].message}")
+            raise CliInputError(f"--recipe-file: {errors[0].message}")
         if args.db is None:
             return recipe, config_parameters(config)
     path = _database_path(args, config)
     if not path.is_file():
-        raise UsageError(f"--db {path}: no database there (file not found)")
+        raise CliInputError(f"--db {path}: no database there (file not found)")
     try:
         with Database.open(path, limits=limits, load_samples=False) as db:
             params = db.get_parameters()
@@ -124,9 +118,9 @@ def _recipe_and_parameters(
             found = db.get_recipe_by_name(args.recipe)
             names = [r.name for r in db.list_recipes()]
     except DataError as exc:
-        raise UsageError(f"--db: {exc}") from exc
+        raise CliInputError(f"--db: {exc}") from exc
     if found is None:
-        raise UsageError(
+        raise CliInputError(
             f"--recipe {args.recipe!r} is not in the database: allowed "
             + (", ".join(repr(n) for n in names) or "(no recipes)")
         )
@@ -136,24 +130,25 @@ def _recipe_and_parameters(
 def _options(args: argparse.Namespace, config: MachineConfig) -> ExportOptions:
     dialects = [d.value for d in Dialect]
     if args.dialect not in dialects:
-        raise UsageError(f"--dialect {args.dialect!r} is not allowed: one of {', '.join(dialects)}")
+        allowed = ", ".join(dialects)
+        raise CliInputError(f"--dialect {args.dialect!r} is not allowed: one of {allowed}")
     chords = None
     if args.chords is not None:
         chords = _number("--chords", args.chords, "a chord error in mm")
         try:
             check_chord_error(chords)
         except ValueError as exc:
-            raise UsageError(f"--{exc}") from exc
+            raise CliInputError(f"--{exc}") from exc
     rpm = DEFAULT_SPINDLE_RPM
     if args.spindle_rpm is not None:
         rpm = _number("--spindle-rpm", args.spindle_rpm, "1 to 100000 rpm")
         _number("--spindle-rpm", args.spindle_rpm, "1 to 100000 rpm", 1.0 <= rpm <= 100_000.0)
     if args.parametric and args.dialect != Dialect.LINUXCNC.value:
-        raise UsageError(
+        raise CliInputError(
             f"--dialect {args.dialect} is not allowed with --parametric: allowed linuxcnc"
         )
     if args.parametric and (chords is not None or args.dxf):
-        raise UsageError(
+        raise CliInputError(
             "--parametric is not allowed with --chords or --dxf: the parametric program's arcs "
             "are G2 moves and a drawing needs a width"
         )
@@ -166,13 +161,13 @@ def _options(args: argparse.Namespace, config: MachineConfig) -> ExportOptions:
 
 
 def generate(args: argparse.Namespace) -> str:
-    """The program or drawing text; UsageError or GeometryError for invalid input."""
+    """The program or drawing text; CliInputError or GeometryError for invalid input."""
     try:
         config = load_config(args.config)
     except ConfigError as exc:
-        raise UsageError(f"--config: {exc}") from exc
+        raise CliInputError(f"--config: {exc}") from exc
     except OSError as exc:
-        raise UsageError(f"--config {args.config}: {exc}") from exc
+        raise CliInputError(f"--config {args.config}: {exc}") from exc
     limits = stave_limits(config)
     options = _options(args, config)
     width = None if args.parametric else _number("--width", args.width, "a width in mm")
@@ -189,11 +184,11 @@ def run(args: argparse.Namespace) -> int:
     except GeometryError as exc:
         print("stave gcode: " + "; ".join(e.message for e in exc.errors), file=sys.stderr)
         return EXIT_INVALID_INPUT
-    except (UsageError, ValueError) as exc:
+    except (CliInputError, ValueError) as exc:
         print(f"stave gcode: {exc}", file=sys.stderr)
         return EXIT_INVALID_INPUT
     if args.output is None:
-        sys.stdout.write(text)
+        emit(text.removesuffix("\n"))
         return EXIT_OK
     try:
         args.output.write_text(text, encoding="utf-8")

@@ -118,3 +118,11 @@ def test_missing_database_and_unwritable_output(capsys, recipe_file, tmp_path):
         "-o", str(tmp_path / "missing" / "dir" / "p.ngc"),
     )  # fmt: skip
     assert code == 2 and "cannot write" in err and len(err.splitlines()) == 1
+
+
+def test_usage_errors_are_one_line_too(capsys):
+    with pytest.raises(SystemExit) as exited:
+        main(["gcode", "--width", "150"])
+    out, err = capsys.readouterr()
+    assert (exited.value.code, out) == (2, "")
+    assert err == "stave gcode: one of the arguments --recipe --recipe-file is required\n"
