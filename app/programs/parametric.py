@@ -13,9 +13,10 @@ program was written) stops the program with `(abort, ...)` before anything moves
 
 LinuxCNC's trigonometric functions take and give degrees; named parameters are
 case-insensitive and some short global ones are taken (#<_a> is the A axis' position),
-so every name here is spelt out. Subroutines come first (LinuxCNC reads a
-definition before its call). Each side has its own tilt (`#<tilt_a>`, `#<tilt_b>`): they
-are equal today and may differ for a barrel whose sides are bevelled differently.
+so every name here is spelt out. The width and its check come right after the header, then
+the subroutines (LinuxCNC reads a definition before its call). Each side has its own tilt
+(`#<_tilt_a>`, `#<_tilt_b>`): they are equal today and may differ for a barrel whose sides
+are bevelled differently.
 """
 
 from __future__ import annotations

@@ -209,3 +209,27 @@ def test_comparison_catches_a_moved_point(tmp_path: Path) -> None:
     with pytest.raises(AssertionError):
         compare(toolpath, moves, None)
     assert isinstance(toolpath.segments[1], LineSegment)
+
+
+@pytest.mark.parametrize(
+    ("home", "corners"),
+    [((500.0, 780.0), 1), ((1400.0, 400.0), 2)],
+    ids=["home above the board", "home level with the board, beyond it"],
+)
+def test_travel_around_the_board_from_other_home_positions(
+    home: tuple[float, float], corners: int, tmp_path: Path
+) -> None:
+    """The routes round the keep-out box (one corner over the board's side, or two round its
+    end) come out of the parametric program's own routing as they do out of the product's."""
+    from tests.programs.conftest import RECIPES
+
+    params = {**PARAMS, "home_x_mm": home[0], "home_y_mm": home[1]}
+    for recipe in (RECIPES[0], RECIPES[1]):
+        program = export_program(recipe, None, params, LIMITS, ExportOptions())
+        for width in (130.0, 200.0):
+            toolpath = stave_toolpath(recipe, width, params, LIMITS)
+            approach = [s for s in toolpath.segments[:4] if not s.cutting]
+            assert len(approach) == corners + 1  # the product's own route has the corners
+            fixed = export_program(recipe, width, params, LIMITS, ExportOptions())
+            compare(toolpath, _run(tmp_path, fixed), None)
+            compare(toolpath, _run(tmp_path, _with_width(program, width), "p.ngc"), None)
