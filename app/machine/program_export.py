@@ -20,6 +20,7 @@ from app.geometry.barrel import RoundBarrelTilt
 from app.geometry.bevel import FixedTilt
 from app.geometry.errors import FieldError, GeometryError
 from app.geometry.limits import StaveLimits
+from app.geometry.profile_kinds import ProfileKind
 from app.geometry.stave_cut import cut_stave, toolpath_params
 from app.geometry.toolpath import ToolPath
 from app.machine.preview import nominal_width_mm
@@ -123,6 +124,16 @@ def parametric_stave(
     recipe: Recipe, params: Mapping[str, float], limits: StaveLimits
 ) -> ParametricStave:
     """The recipe as the parametric program's constants; GeometryError if no width fits."""
+
+    if recipe.profile.kind is not ProfileKind.LINE_ARC_LINE:
+        allowed = f"{ProfileKind.LINE_ARC_LINE.value} (the program solves its cubic itself)"
+        message = (
+            f"profile_kind = {recipe.profile.kind.value!r} has no parametric program: "
+            f"allowed {allowed}; export a program for one width instead"
+        )
+        raise GeometryError(
+            [FieldError("profile_kind", recipe.profile.kind.value, allowed, message)]
+        )
 
     def accepts(width_mm: float) -> bool:
         stave_toolpath(recipe, width_mm, params, limits)

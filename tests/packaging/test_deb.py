@@ -272,7 +272,7 @@ def test_nothing_names_the_build_directory(built: Built):
     assert leftovers.returncode == 1, leftovers.stdout  # 1: no match
     shebang = (built.root / PREFIX / "venv/bin/stave").read_text(encoding="utf-8").splitlines()[0]
     assert shebang == "#!/opt/stave-jointer/venv/bin/python"
-    pyc = next((built.root / PREFIX).rglob("app/__pycache__/cli.*.pyc"))
+    pyc = next((built.root / PREFIX).rglob("app/cli/__pycache__/__init__.*.pyc"))
     assert b"/opt/stave-jointer/venv/lib/python3." in pyc.read_bytes()
 
 

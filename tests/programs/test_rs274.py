@@ -233,3 +233,26 @@ def test_travel_around_the_board_from_other_home_positions(
             fixed = export_program(recipe, width, params, LIMITS, ExportOptions())
             compare(toolpath, _run(tmp_path, fixed), None)
             compare(toolpath, _run(tmp_path, _with_width(program, width), "p.ngc"), None)
+
+
+@pytest.mark.parametrize("kind", ["single_arc", "parabola", "ellipse", "superellipse"])
+def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path: Path) -> None:
+    """Other side profiles are chains of fitted arcs: the fixed program is still exactly the
+    tool path (G2/G3 and chords); the parametric program, which solves the line-arc-line
+    cubic itself, is refused with the reason."""
+    from dataclasses import replace
+
+    from app.data.recipe_profile import RecipeProfile
+    from app.geometry.profile_kinds import ProfileKind, default_parameters
+    from tests.programs.conftest import RECIPES
+
+    profile_kind = ProfileKind(kind)
+    profile = RecipeProfile(profile_kind, tuple(default_parameters(profile_kind).items()))
+    recipe = replace(RECIPES[2], profile=profile, length_ratio=RECIPES[0].length_ratio)
+    toolpath = stave_toolpath(recipe, 180.0, PARAMS, LIMITS)
+    compare(toolpath, _run(tmp_path, export_program(recipe, 180.0, PARAMS, LIMITS,
+                                                    ExportOptions())), None)  # fmt: skip
+    chords = export_program(recipe, 180.0, PARAMS, LIMITS, ExportOptions(chord_error_mm=0.02))
+    compare(toolpath, _run(tmp_path, chords, "chords.ngc"), 0.02)
+    with pytest.raises(GeometryError, match=f"profile_kind = '{kind}' has no parametric program"):
+        export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
