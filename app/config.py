@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -70,7 +70,12 @@ class Section:
         allowed = f"a number {'>' if exclusive_minimum else '>='} {lo} and <= {hi}"
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.error(name, value, allowed)
-        number = float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer like 10**400
+            raise self.error(
+                name, f"{str(value)[:12]}... ({len(str(value))} digits)", allowed
+            ) from None
         below = minimum is not None and (
             number <= minimum if exclusive_minimum else number < minimum
         )
@@ -191,11 +196,10 @@ class MachineConfig:
     log_level: str
     language: str
     extra: dict[str, Any] = field(default_factory=dict)
+    given_keys: frozenset[str] = frozenset()
 
     def with_backend(self, backend: str | None = None, gauge: str | None = None) -> MachineConfig:
         """The same configuration with the backends chosen on the command line."""
-        from dataclasses import replace
-
         return replace(self, backend=backend or self.backend, gauge=gauge or self.gauge)
 
 
@@ -236,11 +240,17 @@ _AXIS_DEFAULTS: dict[str, dict[str, Any]] = {
 }
 
 
+AXIS_REACH: dict[str, float] = {"X": 20_000.0, "Y": 5_000.0, "Z": 60.0}
+"""No stave jointer's axis reaches further from its origin (mm, mm, degrees): a limit beyond
+is a typing error (``-1e12``), and homing towards it would never end."""
+
+
 def _read_axis(section: Section, name: str) -> AxisConfig:
     d = _AXIS_DEFAULTS[name]
     unit = section.text("unit", d["unit"], (d["unit"],))
-    lo = section.number("min_position", d["min"])
-    hi = section.number("max_position", d["max"])
+    reach = AXIS_REACH[name]
+    lo = section.number("min_position", d["min"], -reach, reach)
+    hi = section.number("max_position", d["max"], -reach, reach)
     if hi <= lo:
         raise section.error("max_position", hi, f"greater than min_position ({lo:g})")
     vmax = section.number("max_velocity", d["vmax"], 0.0, 10000.0, exclusive_minimum=True)
@@ -249,7 +259,7 @@ def _read_axis(section: Section, name: str) -> AxisConfig:
     jog_v = section.number("jog_velocity", vmax / 4, 0.0, vmax, exclusive_minimum=True)
     jog_a = section.number("jog_acceleration", amax / 4, 0.0, amax, exclusive_minimum=True)
     home = section.number("home_position", d["home"], lo, hi)
-    switch = section.number("home_switch_position", lo, lo - 50.0, hi)
+    switch = section.number("home_switch_position", lo, lo, hi)
     direction = section.integer("homing_direction", d["dir"], -1, 1)
     if direction == 0:
         raise section.error("homing_direction", 0, "-1 or 1")
@@ -368,11 +378,68 @@ def load_config(path: Path | str | None = None) -> MachineConfig:
     """Read and check a configuration file (the shipped default when ``path`` is None)."""
     file = Path(path) if path is not None else default_config_path()
     try:
+        size = file.stat().st_size
+        if size > MAX_CONFIG_BYTES:
+            raise ConfigError("--config", str(file), f"a file of at most {MAX_CONFIG_BYTES} bytes")
         text = file.read_text(encoding="utf-8")
     except OSError as exc:
         raise ConfigError("--config", str(file), f"a readable file ({exc.strerror})") from exc
+    except UnicodeDecodeError as exc:
+        raise ConfigError(
+            "--config", str(file), f"UTF-8 text (byte {exc.start} is not: {exc.reason})"
+        ) from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ConfigError("--config", str(file), f"valid TOML ({exc})") from exc
-    return parse_config(data, str(file))
+    except RecursionError:
+        raise ConfigError("--config", str(file), "TOML nested at most a few levels deep") from None
+    config = parse_config(data, str(file))
+    return replace(config, given_keys=given_keys(data))
+
+
+MAX_CONFIG_BYTES = 1024 * 1024
+"""Largest configuration file read (the commented samples are about 20 kB)."""
+
+
+def given_keys(data: Mapping[str, Any], prefix: str = "", depth: int = 0) -> frozenset[str]:
+    """Every dotted key the file itself sets (tables too), so that rules can tell a value
+    typed in from a default (see :func:`real_backend_problem`)."""
+    keys: set[str] = set()
+    for name, value in data.items():
+        key = f"{prefix}{name}"
+        keys.add(key)
+        if isinstance(value, Mapping) and depth < 8:
+            keys |= given_keys(value, f"{key}.", depth + 1)
+    return frozenset(keys)
+
+
+REAL_BACKEND_REQUIRED_KEYS: tuple[str, ...] = tuple(
+    f"axes.{axis}.{key}"
+    for axis in ("X", "Y", "Z")
+    for key in ("min_position", "max_position", "home_switch_position")
+)
+
+
+def real_backend_problem(config: MachineConfig) -> ConfigError | None:
+    """Why this configuration must not drive real hardware, or None.
+
+    An empty or truncated file would run real drives with the simulation's default travel:
+    so a real backend needs its own table and every axis's limits and home switch written
+    in the file itself.
+    """
+    if config.backend == "sim":
+        return None
+    required = [f"backend.{config.backend}", *REAL_BACKEND_REQUIRED_KEYS]
+    if config.gauge != "sim":
+        required.append(f"gauge.{config.gauge}")
+    missing = [key for key in required if key not in config.given_keys]
+    if not missing:
+        return None
+    return ConfigError(
+        missing[0],
+        "(not in the file)",
+        f"set in the file for backend {config.backend!r}: a real machine never runs on "
+        f"default travel ({len(missing)} key(s) missing, the file is empty or truncated?)",
+        config.source,
+    )

@@ -86,6 +86,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         config = resolve_config(args)
         size = parse_size(args.size)
+        if args.screenshots is None:
+            from app.drivers.settings_check import check_settings
+
+            check_settings(config)  # here, before the machine process starts
     except ConfigError as exc:
         print(f"stave: configuration error: {exc}", file=sys.stderr)
         return 2
@@ -114,6 +118,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     language = args.lang or config.language
     if args.screenshots is not None:
         return _screenshots(config, db_path, args.screenshots, size)
+
+    if config.backend != "sim":
+        with Database.open(db_path) as database:
+            defaults = database.users_with_default_pins()
+        if defaults:
+            print(
+                f"stave: users {', '.join(defaults)} still have their default PINs: change them "
+                "(`stave db set-pin NAME`) before the real machine runs",
+                file=sys.stderr,
+            )
+            return 2
 
     from app.machine.process_link import ProcessMachineLink
     from app.screens.application import run_gui

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from datetime import UTC, date, datetime, tzinfo
 from pathlib import Path
 
-from app.cli.pin_input import PinMissing, read_pin
+from app.cli.pin_input import NEW_PIN_ENV, PinMissing, read_pin
 from app.data.backup import backup_database, restore_database, service_pin_check
 from app.data.database import Database
 from app.data.errors import DataError
@@ -90,6 +90,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="bring back the backup's users and PINs too (default: keep the current ones)",
     )
 
+    p = actions.add_parser(
+        "set-pin",
+        parents=[common],
+        help="change a user's PIN (your PIN, then the new one: prompt, $STAVE_PIN and "
+        "$STAVE_NEW_PIN, or two lines on standard input)",
+    )
+    p.add_argument("user", metavar="NAME")
+
     actions.add_parser(
         "unlock-pins",
         parents=[common],
@@ -100,11 +108,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p.add_argument("what", nargs="?", choices=LIST_CHOICES, default="recipes")
 
 
+FIRST_DAY = date(1970, 1, 2)
+LAST_DAY = date(9998, 12, 30)
+"""Days a production export can name (a day's window in any zone stays a valid time)."""
+
+
 def _date(text: str) -> date:
     try:
-        return date.fromisoformat(text)
+        day = date.fromisoformat(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"{text!r} is not a date YYYY-MM-DD") from None
+    if not FIRST_DAY <= day <= LAST_DAY:
+        raise argparse.ArgumentTypeError(f"{text!r} is not allowed: {FIRST_DAY} to {LAST_DAY}")
+    return day
 
 
 def _datetime(text: str) -> datetime:
@@ -223,6 +239,23 @@ def _restore(args: argparse.Namespace) -> int:
     return 0
 
 
+def _set_pin(args: argparse.Namespace) -> int:
+    with _open_existing(args) as db:
+        target = next(
+            (u for u in db.list_users() if u.name.casefold() == args.user.casefold()), None
+        )
+        if target is None:
+            names = ", ".join(u.name for u in db.list_users())
+            raise UsageError(f"user = {args.user!r} is not a user: one of {names}")
+        actor = db.authenticate(read_pin(f"changing the PIN of {target.name} needs your PIN"))
+        if actor is None:
+            raise UsageError("pin: this PIN belongs to no user")
+        new_pin = read_pin("the new PIN", env=NEW_PIN_ENV, prompt="new PIN: ")
+        db.set_pin(target, new_pin, actor)
+    print(f"PIN of {target.name} changed (by {actor.name})")
+    return 0
+
+
 def _unlock_pins(args: argparse.Namespace) -> int:
     """Whoever may write the database file (0600, the machine's account) could change any
     value in it anyway; so this needs no PIN, which the lockout would refuse."""
@@ -265,6 +298,7 @@ _ACTIONS = {
     "backup": _backup,
     "restore": _restore,
     "list": _list,
+    "set-pin": _set_pin,
     "unlock-pins": _unlock_pins,
 }
 

@@ -186,6 +186,9 @@ def _text(report: dict[str, Any]) -> str:
 def run(args: argparse.Namespace) -> int:
     try:
         config = load_config(args.config)
+        from app.drivers.settings_check import check_settings
+
+        check_settings(config, to_run=False)  # it never enables a drive
     except ConfigError as exc:
         print(f"stave probe: {exc}", file=sys.stderr)
         return 2

@@ -4,7 +4,14 @@ What it is for: preparing and checking recipes in the office, and proving the ma
 behaviour under faults. It drives the real machine layer (state machine, cycle, planner,
 executor) on the simulation backend, exactly as the operator would: home, select the recipe,
 put a board in, press Start, wait for the cycle to end; with ``--inject`` a fault is injected
-when the cycle reaches a step, and the run watches that nothing moves again by itself.
+when the cycle reaches a step, and the run watches that nothing moves again by itself, and
+says so when the fault had no effect in that step.
+
+A simulation never writes into production: without ``--db`` it runs on a new database of its
+own; ``--db`` naming a file that does not exist creates one marked as a simulation's
+(:attr:`app.data.database.Database.for_simulation`), which later runs write into; any other
+database (the panel's) is only read: the run works on a private copy and says so. A
+``--recipe-file`` is used as given: it never replaces a stored recipe of the same name.
 """
 
 from __future__ import annotations
@@ -35,7 +42,11 @@ from app.machine.process_params import motion_limits
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState
 
-STEP_NAMES = {step.name.lower(): step for step in CycleStep}
+STEP_NAMES = {step.name.lower(): step for step in CycleStep if step is not CycleStep.WAIT_FOR_PART}
+"""Steps a fault can be injected at. Not waiting for a board: the board is put in before
+Start, so the cycle leaves that step in its first period, and a fault "injected" there would
+pass silently."""
+MAX_CYCLES = 100_000
 SETTLE_AFTER_ALARM_S = 3.0  # how long the run watches for motion after an alarm
 HOMING_TIMEOUT_S = 300.0
 CYCLE_TIMEOUT_S = 600.0
@@ -53,6 +64,10 @@ class Injection:
 
     @classmethod
     def parse(cls, text: str) -> Injection:
+        if not text.strip():
+            raise UsageError(
+                "--inject '': empty is not allowed: KIND[:TARGET]@STEP (or leave --inject out)"
+            )
         what, _, step_name = text.partition("@")
         kind, _, target = what.partition(":")
         if kind not in FAULT_KINDS:
@@ -154,6 +169,7 @@ class CycleReport:
     cut_time_s: dict[str, float] = field(default_factory=dict)
     cut_length_mm: dict[str, float] = field(default_factory=dict)
     max_contour_error_mm: float = 0.0
+    injection: str = ""  # what the injected fault did, in words ("" without --inject)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -194,8 +210,9 @@ def _recipe_from_args(args: argparse.Namespace, controller: MachineController) -
             raise UsageError(f"--recipe-file: {exc}") from exc
         if not recipes:
             raise UsageError(f"--recipe-file {args.recipe_file}: no recipe in the file")
+        given = _unused_name(recipes[0], controller)
         try:
-            return controller.store.save_recipe(recipes[0])
+            return controller.store.save_recipe(given)
         except ValueError as exc:
             raise UsageError(f"--recipe-file: {exc}") from exc
     recipe = controller.store.recipe_by_name(args.recipe)
@@ -203,6 +220,21 @@ def _recipe_from_args(args: argparse.Namespace, controller: MachineController) -
         names = ", ".join(r.name for r in controller.store.recipes())
         raise UsageError(f"--recipe {args.recipe!r} is not in the database; it has: {names}")
     return recipe
+
+
+def _unused_name(recipe: Recipe, controller: MachineController) -> Recipe:
+    """The file's recipe as given: if a stored recipe has its name and differs, the file's is
+    stored beside it under "<name> (simulation N)" instead of replacing it."""
+    from dataclasses import replace
+
+    stored = controller.store.recipe_by_name(recipe.name)
+    if stored is None or replace(stored, id=None) == replace(recipe, id=None):
+        return recipe
+    for number in range(1, 1000):
+        name = f"{recipe.name[:26]} (simulation {number})"
+        if controller.store.recipe_by_name(name) is None:
+            return replace(recipe, id=None, name=name)
+    raise UsageError(f"--recipe-file: no free name for {recipe.name!r}")
 
 
 def _sim_world(runtime: MachineRuntime) -> Any:
@@ -295,6 +327,14 @@ def _run_cycle(
         if report.result == "ok":
             report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
             report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
+    if injection is not None:
+        report.injection = f"{injection.kind}@{injection.step.name.lower()}: " + (
+            "never reached that step"
+            if not injected
+            else "raised " + (", ".join(report.alarms) or "no alarm")
+            if report.result != "ok"
+            else "had no effect in that step (the cycle ended normally)"
+        )
     watch.flush_contour_error()
     report.max_contour_error_mm = watch.max_contour_error_mm
     watch.max_contour_error_mm = 0.0
@@ -324,14 +364,22 @@ def _with_profile_options(
 def simulate(
     args: argparse.Namespace, config: MachineConfig, db_path: Path, out: TextIO
 ) -> dict[str, Any]:
-    injection = Injection.parse(args.inject) if args.inject else None
-    if not math.isfinite(args.width):
-        raise UsageError(f"--width {args.width} is not allowed: a finite number of mm")
-    if args.cycles < 1:
-        raise UsageError(f"--cycles {args.cycles} is not allowed: 1 or more")
-    runtime = MachineRuntime.create(config.with_backend("sim", "sim"), db_path)
+    injection = Injection.parse(args.inject) if args.inject is not None else None
+    if not math.isfinite(args.width) or args.width <= 0:
+        raise UsageError(f"--width {args.width:g} is not allowed: a finite number of mm > 0")
+    if not 1 <= args.cycles <= MAX_CYCLES:
+        raise UsageError(f"--cycles {args.cycles} is not allowed: 1 to {MAX_CYCLES}")
+    try:
+        trace_file = args.trace.open("w", newline="", encoding="utf-8") if args.trace else None
+    except OSError as exc:
+        raise UsageError(f"--trace {args.trace}: cannot be written ({exc.strerror})") from None
+    try:
+        runtime = MachineRuntime.create(config.with_backend("sim", "sim"), db_path)
+    except BaseException:
+        if trace_file is not None:
+            trace_file.close()
+        raise
     watch = Watch()
-    trace_file = args.trace.open("w", newline="", encoding="utf-8") if args.trace else None
     try:
         if trace_file is not None:
             watch.trace = csv.writer(trace_file)
@@ -351,6 +399,8 @@ def simulate(
                 reports.append(report)
                 if not args.json:
                     print(_describe(report), file=out)
+                    if report.injection:
+                        print(f"injected {report.injection}", file=out)
                 if report.result != "ok":
                     break
         c = runtime.controller
@@ -393,6 +443,7 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
         "max_contour_error_mm": r.max_contour_error_mm,
         "result": r.result,
         "alarms": r.alarms,
+        "injection": r.injection or None,
     }
 
 
@@ -406,15 +457,46 @@ def _describe(r: CycleReport) -> str:
     )
 
 
+def simulation_database(requested: Path | None, tmp: Path, out: TextIO) -> Path:
+    """The database the run writes into: never one the panel uses (see the module text)."""
+    from app.data.backup import backup_database
+    from app.data.database import Database
+
+    if requested is None:
+        path = tmp / "simulate.db"
+    elif not requested.exists():
+        path = requested
+    else:
+        with Database.open(requested) as existing:
+            if existing.for_simulation:
+                return requested
+        copy = tmp / "simulate.db"
+        backup_database(requested, copy)
+        print(
+            f"stave simulate: {requested} is not a simulation's database: the run reads its "
+            "recipes and parameters from a copy and writes nothing into it",
+            file=out,
+        )
+        return copy  # a private copy, deleted with the run
+    with Database.open(path) as created:
+        created.mark_for_simulation()
+    return path
+
+
 def run(args: argparse.Namespace) -> int:
+    from app.data.errors import DataError
+
     try:
         config = load_config(args.config)
         with tempfile.TemporaryDirectory() as tmp:
-            db_path = args.db if args.db is not None else Path(tmp) / "simulate.db"
+            db_path = simulation_database(args.db, Path(tmp), sys.stderr)
             result = simulate(args, config, db_path, sys.stdout)
-    except (ConfigError, UsageError) as exc:
+    except (ConfigError, UsageError, DataError) as exc:
         print(f"stave simulate: {exc}", file=sys.stderr)
         return 2
+    except RuntimeError as exc:  # the simulated machine did not do what it should
+        print(f"stave simulate: {exc}", file=sys.stderr)
+        return 1
     if args.json:
         print(json.dumps(result, indent=2))
     else:

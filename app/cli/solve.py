@@ -129,7 +129,16 @@ def settings_from_config(config: MachineConfig) -> MachineSettings:
     return MachineSettings(process=process, limits=replace(StaveLimits(), **travel))
 
 
+def _argument_text(value: object) -> str:
+    """The text of an option's value. ``--length=--`` reaches us as an empty list (argparse
+    takes ``--`` for its end-of-options marker even after ``=``): it is the text "--"."""
+    if isinstance(value, list):
+        return " ".join(str(v) for v in value) or "--"
+    return str(value)
+
+
 def _parse_float(field: str, text: str, allowed: str) -> float:
+    text = _argument_text(text)
     try:
         value = float(text)
     except ValueError:
@@ -143,6 +152,7 @@ def _number_or_text(text: str | None) -> object:
     """A float if the text is one; otherwise the text itself, for the validators to report."""
     if text is None:
         return None
+    text = _argument_text(text)
     try:
         return float(text)
     except ValueError:
@@ -150,6 +160,7 @@ def _number_or_text(text: str | None) -> object:
 
 
 def _ratio_or_text(text: str) -> tuple[Ratio | None, object]:
+    text = _argument_text(text)
     try:
         ratio = Ratio.parse(text)
     except ValueError:

@@ -123,6 +123,10 @@ RECIPE_IMPORT_ROLE = Role.TECHNICIAN
 USER_ADMIN_ROLE = Role.SERVICE
 """Adding users."""
 
+SIMULATION_APPLICATION_ID = 0x53494D55
+"""SQLite's header field ``application_id`` ("SIMU") of a database made by ``stave simulate``:
+in the file itself, so a copy keeps it, and no table or migration is needed for it."""
+
 SYSTEM_USER = "system"
 """Name logged for changes the software makes by itself (defaults of a new database)."""
 
@@ -342,6 +346,18 @@ class Database:
         self.close()
 
     @property
+    def for_simulation(self) -> bool:
+        """True for a database ``stave simulate`` created for itself (never the panel's)."""
+        row = self._conn.execute("PRAGMA application_id").fetchone()
+        return int(row[0]) == SIMULATION_APPLICATION_ID
+
+    def mark_for_simulation(self) -> None:
+        """Mark a database as a simulation's own (only a new one: production stays production)."""
+        if self._conn.execute("SELECT 1 FROM production LIMIT 1").fetchone() is not None:
+            raise PermissionDeniedError(f"{self._path}: has production records: not a simulation's")
+        self._conn.execute(f"PRAGMA application_id = {SIMULATION_APPLICATION_ID}")
+
+    @property
     def path(self) -> Path:
         """The database file."""
         return self._path
@@ -545,6 +561,17 @@ class Database:
                 None if state.locked_until is None else format_utc(state.locked_until),
             ),
         )
+
+    def users_with_default_pins(self) -> list[str]:
+        """Names of the users whose PIN is still the one a new database gives them (the real
+        machine does not start while there is one: the defaults are printed in the README)."""
+        defaults = [pin for _, _, pin in DEFAULT_USERS]
+        rows = self._conn.execute("SELECT name, pin_hash FROM users ORDER BY id").fetchall()
+        return [
+            str(row["name"])
+            for row in rows
+            if any(verify_pin(pin, str(row["pin_hash"])) for pin in defaults)
+        ]
 
     def _pin_taken(self, pin: str, except_user_id: int | None) -> bool:
         rows = self._conn.execute("SELECT id, pin_hash FROM users").fetchall()

@@ -339,7 +339,10 @@ def _read_number(key: str, value: object, errors: list[FieldError]) -> float | N
         errors.append(not_a_number(key, value, allowed))
         return None
     if isinstance(value, numbers.Real):
-        number = float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer like 10**400
+            number = math.inf
     elif isinstance(value, str):
         try:
             number = float(value.strip())
@@ -364,7 +367,7 @@ def _read_ratio(key: str, value: object, errors: list[FieldError]) -> Ratio | No
         if isinstance(value, str):
             return Ratio.parse(value)
         raise ValueError("not text or a number")
-    except ValueError as exc:
+    except (ValueError, OverflowError) as exc:
         message = f"{key} = {format_value(value)} is not a ratio ({exc}): allowed {_RATIO_ALLOWED}"
         errors.append(FieldError(key, value, _RATIO_ALLOWED, message))
         return None

@@ -35,6 +35,8 @@ from app.geometry.errors import FieldError
 JSON_FORMAT_NAME = "stave-jointer-recipes"
 JSON_FORMAT_VERSION = 1
 SUFFIXES = (".json", ".csv")
+MAX_FILE_BYTES = 64 * 1024 * 1024
+"""Largest recipe file read (a 24,000-recipe file is about 2 MB)."""
 
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+\s*$")
 _TEXT_KEYS = frozenset({"name", "note", "tilt_mode", "profile_kind", "profile"})
@@ -67,6 +69,11 @@ def read_recipe_rows(path: Path) -> list[RecipeRow]:
     """The rows of a .json or .csv recipe file (raw values, not yet checked)."""
     suffix = _suffix(path)
     try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise RecipeFileError(
+                f"{path}: {size} bytes is too large: a recipe file is at most {MAX_FILE_BYTES}"
+            )
         text = path.read_text(encoding="utf-8-sig")
     except FileNotFoundError:
         raise RecipeFileError(f"{path}: file not found") from None
@@ -87,6 +94,10 @@ def _json_rows(path: Path, text: str) -> list[RecipeRow]:
         raise RecipeFileError(
             f"{path}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
         ) from None
+    except RecursionError:
+        raise RecipeFileError(f"{path}: JSON nested too deeply (a recipe file is flat)") from None
+    except ValueError as exc:  # e.g. an integer of more than 4300 digits
+        raise RecipeFileError(f"{path}: not usable JSON ({exc})") from None
     if isinstance(document, dict) and "recipes" in document:
         declared = document.get("format", JSON_FORMAT_NAME)
         if declared != JSON_FORMAT_NAME:

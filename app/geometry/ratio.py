@@ -22,6 +22,14 @@ _DECIMAL_RE = re.compile(r"^\s*(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?\s*$")
 
 _EXPECTED = "a fraction like '3/4' or a decimal like '0.75' (not negative)"
 
+MAX_TEXT_CHARS = 40
+"""Longest ratio text read: a cooper's ratio is a few characters; an enormous one would
+make the exact arithmetic take minutes (``1e99999999`` is ten characters, hence also:)"""
+MAX_EXPONENT = 30
+"""Largest decimal exponent magnitude read (``1e-31`` and ``1e31`` are refused, not computed)."""
+MAX_PART = 10**12
+"""Largest numerator or denominator typed as a fraction."""
+
 
 @dataclass(frozen=True)
 class Ratio:
@@ -63,14 +71,29 @@ class Ratio:
         """
         if not isinstance(text, str):
             raise ValueError(f"invalid ratio {text!r}: expected {_EXPECTED}")
+        if len(text) > MAX_TEXT_CHARS:
+            raise ValueError(
+                f"invalid ratio {text[:20]!r}... ({len(text)} characters): at most "
+                f"{MAX_TEXT_CHARS} characters"
+            )
         match = _FRACTION_RE.match(text)
         if match is not None:
             numerator, denominator = int(match.group(1)), int(match.group(2))
             if denominator == 0:
                 raise ValueError(f"invalid ratio {text!r}: the denominator must not be 0")
+            if numerator > MAX_PART or denominator > MAX_PART:
+                raise ValueError(
+                    f"invalid ratio {text!r}: numerator and denominator at most {MAX_PART:.0e}"
+                )
             return cls(numerator, denominator)
-        if _DECIMAL_RE.match(text) is None:
+        decimal = _DECIMAL_RE.match(text)
+        if decimal is None:
             raise ValueError(f"invalid ratio {text!r}: expected {_EXPECTED}")
+        if decimal.group(3) is not None and abs(int(decimal.group(3)[1:])) > MAX_EXPONENT:
+            raise ValueError(
+                f"invalid ratio {text!r}: the exponent must be within -{MAX_EXPONENT}.."
+                f"{MAX_EXPONENT}"
+            )
         approx = Fraction(text.strip()).limit_denominator(MAX_DENOMINATOR)
         return cls(approx.numerator, approx.denominator)
 
