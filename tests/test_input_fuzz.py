@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 from app.cli import main as stave
 from app.data.exchange import read_recipes
+from app.data.recipe import ROW_KEYS
 from app.data.recipe_files import RecipeFileError
 
 FUZZ = settings(
@@ -94,19 +95,7 @@ json_values = st.recursive(
     ),
     max_leaves=8,
 )
-recipe_keys = st.sampled_from(
-    [
-        "name",
-        "length_mm",
-        "thickness_mm",
-        "length_ratio",
-        "width_ratio",
-        "tilt_deg",
-        "tilt_mode",
-        "note",
-        "x",
-    ]
-)
+recipe_keys = st.sampled_from([*ROW_KEYS, "x"])
 
 
 @FUZZ
