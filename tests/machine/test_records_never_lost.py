@@ -40,11 +40,13 @@ def piece(n: int) -> PieceRecord:
     return PieceRecord(1.7e9 + n, None, f"board {n}", 150.0, 10.0, 5000.0, 8.0, 28.0, "ok")
 
 
-def hold_write_lock(path: Path, seconds: float, started: threading.Event) -> None:
+def hold_write_lock(
+    path: Path, started: threading.Event, release: threading.Event, timeout_s: float = 60.0
+) -> None:
     with closing(sqlite3.connect(path, isolation_level=None, timeout=30)) as conn:
         conn.execute("BEGIN IMMEDIATE")
         started.set()
-        time.sleep(seconds)
+        release.wait(timeout_s)
         conn.execute("COMMIT")
 
 
@@ -71,32 +73,43 @@ def test_import_while_cutting_stores_every_record(
         ),
         encoding="utf-8",
     )
-    locked = threading.Event()
+    locked, release = threading.Event(), threading.Event()
     reports: list[str] = []
 
     def technician_imports() -> None:
-        hold_write_lock(db_path, 3.0, locked)  # longer than the writer's busy timeout
+        hold_write_lock(db_path, locked, release)  # as the old import held it, for long
         with Database.open(db_path) as db:
             reports.append(import_recipes(db, big, technician).summary())
 
     worker = threading.Thread(target=technician_imports)
     worker.start()
     assert locked.wait(10)
-    waited = False
-    cycles = 0
-    while worker.is_alive() or cycles < 3:
+
+    def cut_one() -> None:
         rig.load()
         rig.send(cmd.Start())
         rig.until(lambda c: c.state is MachineState.READY, 200.0)
+
+    cycles = 0
+    for _ in range(2):  # boards cut while the database is locked
+        cut_one()
         cycles += 1
-        waited = waited or rig.controller.store.unstored_age_s() > 0
+    deadline = time.monotonic() + 20
+    while not rig.controller.alarms.is_active("W103", "database"):
+        assert time.monotonic() < deadline, "W103 not raised while records wait"
+        rig.run(0.5)
+        time.sleep(0.05)
+    assert rig.controller.store.unstored_age_s() > 0.5
+    release.set()  # the lock goes; the real import runs in batches while boards are cut
+    while worker.is_alive() or cycles < 4:
+        cut_one()
+        cycles += 1
     worker.join()
     rig.run(0.1)
     transitions = list(rig.controller.alarms.history)
     runtime.shutdown()
 
-    assert waited  # the records waited ...
-    assert any(t.code == "W103" for t in transitions)  # ... and the operator was told
+    assert any(t.code == "W103" and t.to_state.name != "ACTIVE_UNACKED" for t in transitions)
     assert reports and "3000 accepted (3000 new" in reports[0]
     with Database.open(db_path) as db:
         assert db.piece_counts(EPOCH) == (cycles, cycles)
@@ -116,8 +129,8 @@ def test_waiting_records_survive_a_restart_and_are_stored_once(
     monkeypatch.setattr(ThreadedStore, "CLOSE_TIMEOUT_S", 0.3)
     db_path = tmp_path / "stave.db"
     Database.open(db_path).close()
-    locked = threading.Event()
-    holder = threading.Thread(target=hold_write_lock, args=(db_path, 4.0, locked))
+    locked, release = threading.Event(), threading.Event()
+    holder = threading.Thread(target=hold_write_lock, args=(db_path, locked, release))
     holder.start()
     assert locked.wait(10)
     store = open_store(db_path, load_config(), threaded=True)
@@ -127,6 +140,7 @@ def test_waiting_records_survive_a_restart_and_are_stored_once(
     assert store.unstored_age_s() > 0
     store.close()  # the lock is still held: the records stay in the journal
     assert len(WriteJournal(journal_path(db_path)).entries()) >= 3
+    release.set()
     holder.join()
 
     # Pretend the first one was stored just before a crash, before the journal was emptied.
