@@ -137,7 +137,7 @@ _RECIPE_COLUMNS = (
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
-    "alarm_code"
+    "alarm_code, resumed"
 )
 _ALARM_COLUMNS = "id, time, code, text, source, from_state, to_state, user_name"
 
@@ -1012,6 +1012,26 @@ class Database:
             (format_utc(shift_start),),
         ).fetchone()
         return int(row[0]), int(row[1])
+
+    # ------------------------------------------------------------------ machine state
+
+    def machine_state(self, key: str) -> str | None:
+        """A value the machine keeps across a restart (e.g. the interrupted board), or None."""
+        row = self._conn.execute("SELECT value FROM machine_state WHERE key = ?", (key,)).fetchone()
+        return None if row is None else str(row["value"])
+
+    def set_machine_state(self, key: str, value: str | None) -> None:
+        """Store (or with None forget) a value the machine keeps across a restart."""
+        with self._write() as conn:
+            if value is None:
+                conn.execute("DELETE FROM machine_state WHERE key = ?", (key,))
+            else:
+                conn.execute(
+                    "INSERT INTO machine_state (key, value, updated_at) VALUES (?, ?, ?) "
+                    "ON CONFLICT (key) DO UPDATE SET value = excluded.value, "
+                    "updated_at = excluded.updated_at",
+                    (key, value, self._now()),
+                )
 
     # ------------------------------------------------------------------ alarms
 

@@ -60,7 +60,16 @@ class SeedParametersWrite:
     values: dict[str, float]
 
 
-PendingWrite = PieceWrite | AlarmWrite | SeedParametersWrite
+@dataclass(frozen=True)
+class MachineStateWrite:
+    """A value the machine keeps across a restart (None: forget it), e.g. the board it was
+    cutting; journalled like the records, so a crash right after the write keeps it."""
+
+    key: str
+    value: str | None
+
+
+PendingWrite = PieceWrite | AlarmWrite | SeedParametersWrite | MachineStateWrite
 
 
 def journal_path(database_path: Path) -> Path:
@@ -74,6 +83,8 @@ def encode_write(write: PendingWrite) -> dict[str, Any]:
         return {"kind": "piece", **production_fields(write.record)}
     if isinstance(write, AlarmWrite):
         return {"kind": "alarm", **alarm_fields(write.event)}
+    if isinstance(write, MachineStateWrite):
+        return {"kind": "machine_state", "key": write.key, "value": write.value}
     return {"kind": "seed_parameters", "values": dict(write.values)}
 
 
@@ -86,7 +97,12 @@ def decode_write(data: dict[str, Any]) -> PendingWrite:
         return AlarmWrite(alarm_from_fields(data))
     if kind == "seed_parameters":
         return SeedParametersWrite({str(k): float(v) for k, v in data["values"].items()})
-    raise ValueError(f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters")
+    if kind == "machine_state":
+        value = data["value"]
+        return MachineStateWrite(str(data["key"]), None if value is None else str(value))
+    raise ValueError(
+        f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters, machine_state"
+    )
 
 
 class WriteJournal:

@@ -77,6 +77,7 @@ class ProductionRecord:
     alarm_code: str | None = None
     tilt_deg: float | None = None
     id: int | None = None
+    resumed: bool = False  # the cut was interrupted and resumed (every part of both sides cut)
 
     def problems(self) -> list[str]:
         """Everything that makes this record unstorable, as messages naming the field."""

@@ -184,6 +184,21 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CHECK (target_width_mm IS NULL OR target_width_mm > 0)",
         ),
     ),
+    Migration(
+        6,
+        "resumed boards in production; the machine's state that outlives a restart",
+        (
+            "ALTER TABLE production ADD COLUMN resumed INTEGER NOT NULL DEFAULT 0 "
+            "CHECK (resumed IN (0, 1))",
+            """
+            CREATE TABLE machine_state (
+                key TEXT PRIMARY KEY CHECK (length(key) BETWEEN 1 AND 40),
+                value TEXT NOT NULL,
+                updated_at TEXT NOT NULL
+            ) STRICT
+            """,
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

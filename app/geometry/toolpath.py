@@ -63,6 +63,8 @@ __all__ = [
     "SideCut",
     "ToolPath",
     "ToolPathParams",
+    "board_keep_out_box",
+    "board_width_mm",
     "build_original_toolpath",
     "build_toolpath",
     "compensated_side",
@@ -364,19 +366,40 @@ class KeepOutBox:
         return True
 
 
-def keep_out_box(profile: SideProfile, params: ToolPathParams) -> KeepOutBox:
-    """The box around the raw board (L x W) that travel moves keep the pivot out of."""
-    tilt_rad = math.radians(max(abs(params.home_z_deg), params.max_tilt_deg))
-    across = params.tool_radius_mm / math.cos(tilt_rad) + params.machine_height_mm * math.tan(
-        tilt_rad
-    )
-    board_mm = params.board_width_mm
-    half_width = max(profile.width_mm, 0.0 if board_mm is None else board_mm) / 2.0
+def board_keep_out_box(
+    length_mm: float,
+    width_mm: float,
+    tool_radius_mm: float,
+    machine_height_mm: float,
+    tilt_deg: float,
+) -> KeepOutBox:
+    """The box (profile frame) around a raw board of ``length_mm`` x ``width_mm`` that keeps
+    a cutter tilted by up to ``|tilt_deg|`` off it while the pivot stays outside."""
+    tilt_rad = math.radians(abs(tilt_deg))
+    across = tool_radius_mm / math.cos(tilt_rad) + machine_height_mm * math.tan(tilt_rad)
+    half_width = width_mm / 2.0
     return KeepOutBox(
-        x_min=-params.tool_radius_mm,
-        x_max=profile.length_mm + params.tool_radius_mm,
+        x_min=-tool_radius_mm,
+        x_max=length_mm + tool_radius_mm,
         y_min=-half_width - across,
         y_max=half_width + across,
+    )
+
+
+def board_width_mm(profile: SideProfile, params: ToolPathParams) -> float:
+    """The raw board's width: the measured one when the stave is cut narrower from it."""
+    board_mm = params.board_width_mm
+    return max(profile.width_mm, 0.0 if board_mm is None else board_mm)
+
+
+def keep_out_box(profile: SideProfile, params: ToolPathParams) -> KeepOutBox:
+    """The box around the raw board (L x W) that travel moves keep the pivot out of."""
+    return board_keep_out_box(
+        profile.length_mm,
+        board_width_mm(profile, params),
+        params.tool_radius_mm,
+        params.machine_height_mm,
+        max(abs(params.home_z_deg), params.max_tilt_deg),
     )
 
 

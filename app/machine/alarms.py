@@ -59,6 +59,7 @@ CATALOGUE: dict[str, AlarmDefinition] = {
         AlarmDefinition("E044", "Board removed during the cycle", Severity.FAULT),
         AlarmDefinition("E050", "Tool path outside the axis travel", Severity.FAULT),
         AlarmDefinition("E051", "Tool path could not be planned", Severity.FAULT),
+        AlarmDefinition("E052", "Move refused: it would cross the board", Severity.FAULT),
         AlarmDefinition("E090", "Internal error in the machine process", Severity.FAULT),
         AlarmDefinition("W101", "Jog stopped: no refresh from the screen", Severity.WARNING),
         AlarmDefinition("W102", "Device event", Severity.WARNING),

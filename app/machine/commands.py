@@ -16,6 +16,18 @@ class Start:
 
 
 @dataclass(frozen=True)
+class Resume:
+    """Go on with the interrupted board: clear of it with the spindle off, spindle up at the
+    lead-in of the side not finished, then the rest of the cut."""
+
+
+@dataclass(frozen=True)
+class Abandon:
+    """Give up the interrupted board: clear of it with the spindle off (if the axes know
+    where they are), unclamp; it is recorded as aborted and must be taken off."""
+
+
+@dataclass(frozen=True)
 class Stop:
     """Controlled stop (IEC 60204-1 category 2): decelerate along the path and hold."""
 

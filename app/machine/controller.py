@@ -38,12 +38,15 @@ from app.drivers.contracts import (
 from app.machine import commands as cmd
 from app.machine.alarms import AlarmManager
 from app.machine.axes import AxisGroup
+from app.machine.board_resume import continue_job, interruption
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
 from app.machine.cycle_plan import PlannedStave, plan_board
 from app.machine.executor import ViolationKind, check_feedback
 from app.machine.homing import HomingFailed, HomingSequence
+from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
+from app.machine.planner.trajectory import Phase
 from app.machine.preview import build_preview, recipe_preview
 from app.machine.process_params import motion_limits, stave_limits
 from app.machine.sim_tools import SimulationTools
@@ -51,6 +54,7 @@ from app.machine.snapshot import MachineSnapshot, PlanPreview
 from app.machine.snapshot_view import build_snapshot, state_text
 from app.machine.states import (
     LATCHED_STATES,
+    CycleStep,
     Event,
     MachineState,
     Mode,
@@ -137,6 +141,23 @@ class MachineController:
         recipe_id = store.first_recipe_id()
         if recipe_id is not None:
             self.recipe = store.recipe(recipe_id)
+        self.interrupted = self._load_interrupted()
+        if self.interrupted is not None:
+            # Keep the partly cut board clamped: unclamped, it may move and cannot be resumed.
+            self.outputs = replace(self.outputs, clamps_close=True)
+            self.message = f"{self.interrupted.describe()}: Resume or Abandon"
+
+    def _load_interrupted(self) -> InterruptedBoard | None:
+        try:
+            board = self.store.interrupted_board()
+        except InterruptedRecordError:
+            # Unreadable: assume the worst (a partly cut board of unknown shape); it can only
+            # be abandoned, and nothing moves for it.
+            return InterruptedBoard(None, "unknown", 0.0, Phase.CUT_A, 0.0, 0.0, 0.0, "unreadable")
+        if board is not None and not board.reason:
+            # Recorded during the cut and never ended: the machine stopped without knowing why.
+            board = replace(board, reason="restart")
+        return board
 
     # ---------------------------------------------------------------- lifecycle
     def power_up(self) -> None:
@@ -160,6 +181,8 @@ class MachineController:
 
     def shutdown(self) -> None:
         """Stop everything and release the devices (spindle off, drives disabled)."""
+        if self.cycle is not None:
+            self._record_abort("shutdown")
         try:
             if self._comms_ok:
                 self._stop_now()
@@ -184,6 +207,8 @@ class MachineController:
             self.inputs,
             self.cycle is not None,
             "faults" in self.backend.extras,
+            interrupted=self.interrupted is not None and self.cycle is None,
+            interrupted_unclamped=self.interrupted is not None and self.interrupted.unclamped,
         )
 
     def _refuse(self, reason: str) -> None:
@@ -224,6 +249,82 @@ class MachineController:
         )
         self.message = ""
         self._transition(Event.START)
+
+    def _on_Resume(self, _c: cmd.Resume) -> None:
+        self._continue_board(resume=True)
+
+    def _on_Abandon(self, _c: cmd.Abandon) -> None:
+        board = self.interrupted
+        assert board is not None
+        recipe = self.store.recipe(board.recipe_id) if board.recipe_id is not None else None
+        if not self.axes.all_homed() or recipe is None or board.width_mm <= 0.0:
+            # Where the cutter is, or what the board looks like, is unknown: nothing moves.
+            self.outputs = replace(self.outputs, clamps_close=False, spindle_on=False)
+            self._end_interrupted("aborted", None)
+            self.message = (
+                "board abandoned and unclamped: take it off (nothing moved: check that the "
+                "cutter is clear of it)"
+            )
+            return
+        self._continue_board(resume=False)
+
+    def _continue_board(self, *, resume: bool) -> None:
+        board = self.interrupted
+        assert board is not None
+        recipe = self.store.recipe(board.recipe_id) if board.recipe_id is not None else None
+        if recipe is None:
+            self._refuse(f"recipe {board.recipe_name!r} no longer exists: abandon the board")
+            return
+        self.params = self.store.parameters()
+        job = continue_job(
+            recipe,
+            board,
+            self.params,
+            stave_limits(self.config),
+            motion_limits(self.config, self.params),
+            resume=resume,
+        )
+        self.cycle = AutomaticCycle(
+            recipe=recipe,
+            config=self.config,
+            gauge=self.gauge,
+            plan_job=None,
+            submit=self._submit,
+            started_s=self.now_s,
+            feed_override_pct=self.feed_override_pct,
+            continue_job=job,
+            resume=resume,
+            interrupted_phase=board.phase,
+        )
+        self.message = "resuming the board" if resume else "abandoning the board"
+        self._transition(Event.START)
+
+    def _interrupt_alarm(self) -> str | None:
+        """The alarm code that interrupted the board, for its production record."""
+        reason = self.interrupted.reason if self.interrupted is not None else ""
+        return reason if reason.startswith(("E", "W")) else None
+
+    def _end_interrupted(self, result: str, cycle: AutomaticCycle | None) -> None:
+        """The interrupted board is finished (resumed) or abandoned: record it, forget it."""
+        board = self.interrupted
+        assert board is not None
+        if cycle is None:
+            piece = PieceRecord(
+                self.wall_clock(),
+                board.recipe_id,
+                board.recipe_name,
+                board.width_mm or None,
+                None,
+                None,
+                None,
+                0.0,
+                result,
+                self._interrupt_alarm(),
+            )
+            self.store.record_piece(piece)
+        self.interrupted = None
+        self.store.save_interrupted_board(None)
+        self._finished_board_on_table = True
 
     def _on_Stop(self, _c: cmd.Stop) -> None:
         if self.now_s - self._last_stop_s < STOP_LOCKOUT_S:
@@ -408,6 +509,7 @@ class MachineController:
             return
         if not self.inputs.part_present:
             self._finished_board_on_table = False
+        self._watch_interrupted_clamps()
         self.sim_tools.tick(self.inputs.part_present)
         self._process_buttons()
         self._supervise()
@@ -589,6 +691,7 @@ class MachineController:
                     self.alarms.clear("W101", warning)
         elif self.state is MachineState.AUTOMATIC and self.cycle is not None:
             self.outputs = self.cycle.tick(self.now_s, self.inputs, self.outputs, self.axes)
+            self._remember_cut()
             self._publish_plan()
             if self.cycle.finished:
                 self._finish_cycle()
@@ -618,11 +721,56 @@ class MachineController:
         self._plan_id += 1
         self._plans = {self._plan_id: build_preview(self._plan_id, cycle.planned.toolpath)}
 
+    def _watch_interrupted_clamps(self) -> None:
+        """A partly cut board whose clamps open (a lost I/O coupler switches its outputs off,
+        an operator unclamps in Manual) may move: from then on it can only be abandoned."""
+        board = self.interrupted
+        if board is None or board.unclamped or self.inputs.clamps_closed:
+            return
+        if self.cycle is not None and self.cycle.step is CycleStep.UNCLAMPING:
+            return
+        self.interrupted = replace(board, unclamped=True)
+        self.store.save_interrupted_board(self.interrupted)
+
+    def _remember_cut(self) -> None:
+        """Persist the board's phase each time the cut enters a new one, so that a crash or a
+        power loss leaves a record of a partly cut board."""
+        cycle = self.cycle
+        if cycle is None or not cycle.board_partly_cut:
+            return
+        phase = cycle.cut_phase
+        if self.interrupted is not None and self.interrupted.phase is phase:
+            return
+        record = interruption(cycle, self.axes.positions(), "", self.interrupted)
+        if record is not None:
+            self.interrupted = record
+            self.store.save_interrupted_board(record)
+
     def _finish_cycle(self) -> None:
         cycle = self.cycle
         assert cycle is not None
         cycle_time_s = self.now_s - cycle.started_s
+        if cycle.is_continuation and not cycle.resume:
+            board = self.interrupted
+            piece = self._piece_record(
+                cycle,
+                cycle_time_s,
+                "aborted",
+                board.reason if board and board.reason != "stop" else None,
+            )
+            self.store.record_piece(piece)
+            self.finished_cycles.append((piece, cycle))
+            del self.finished_cycles[:-10]
+            self._end_interrupted("aborted", cycle)
+            self.cycle = None
+            self.message = "board abandoned: take it off"
+            self._transition(Event.CYCLE_DONE)
+            return
         piece = self._piece_record(cycle, cycle_time_s, "ok", None)
+        if cycle.is_continuation:
+            piece = replace(piece, resumed=True)
+        if self.interrupted is not None:
+            self._end_interrupted("ok", cycle)
         self.store.record_piece(piece)
         self.pieces_shift += 1
         self.pieces_total += 1
@@ -653,7 +801,15 @@ class MachineController:
 
     def _record_abort(self, alarm_code: str) -> None:
         cycle = self.cycle
-        if cycle is None or cycle.step.name == "WAIT_FOR_PART":
+        if cycle is None:
+            return
+        record = interruption(cycle, self.axes.positions(), alarm_code or "stop", self.interrupted)
+        if record is not None:
+            # Not a piece yet: a board partly cut, to resume or abandon (Start offers both).
+            self.interrupted = record
+            self.store.save_interrupted_board(record)
+            return
+        if cycle.step.name == "WAIT_FOR_PART":
             return
         result = "rejected" if cycle.planned is None else "aborted"
         piece = self._piece_record(cycle, self.now_s - cycle.started_s, result, alarm_code or None)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import concurrent.futures
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from typing import Any
 
 from app.config import MachineConfig
 from app.data.recipe import Recipe
@@ -22,11 +23,14 @@ from app.drivers.contracts import CommunicationError, InputImage, OutputImage, W
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
 from app.machine.executor import ExecutorOutput, PathExecutor
+from app.machine.planner.continuation import Continuation
+from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.trajectory import Phase
 from app.machine.states import CycleStep
 
-PlanJob = Callable[[], PlannedStave]
-PlanSubmitter = Callable[[PlanJob], "concurrent.futures.Future[PlannedStave]"]
+PlanJob = Callable[[], Any]
+PlanSubmitter = Callable[[PlanJob], "concurrent.futures.Future[Any]"]
+ContinueJob = Callable[[tuple[float, float, float]], tuple[PlannedStave, Continuation]]
 
 GAUGE_TIMEOUT_S = 2.0
 
@@ -37,12 +41,13 @@ _PHASE_STEPS: dict[Phase, CycleStep] = {
     Phase.CUT_B: CycleStep.CUTTING_B,
     Phase.RETURN: CycleStep.RETURNING,
     Phase.POINT_TO_POINT: CycleStep.CUTTING_A,
+    Phase.RETRACT: CycleStep.RETRACTING,
 }
 
 
-def run_now(job: PlanJob) -> concurrent.futures.Future[PlannedStave]:
+def run_now(job: PlanJob) -> concurrent.futures.Future[Any]:
     """Plan on the calling thread (simulated clock: deterministic and instant)."""
-    future: concurrent.futures.Future[PlannedStave] = concurrent.futures.Future()
+    future: concurrent.futures.Future[Any] = concurrent.futures.Future()
     try:
         future.set_result(job())
     except Exception as exc:
@@ -83,11 +88,14 @@ class AutomaticCycle:
         recipe: Recipe,
         config: MachineConfig,
         gauge: WidthGauge,
-        plan_job: Callable[[float, tuple[float, float, float]], PlannedStave],
+        plan_job: Callable[[float, tuple[float, float, float]], PlannedStave] | None,
         submit: PlanSubmitter,
         started_s: float,
         feed_override_pct: float,
         board_already_cut: bool = False,
+        continue_job: ContinueJob | None = None,
+        resume: bool = False,
+        interrupted_phase: Phase | None = None,
     ) -> None:
         self.recipe = recipe
         self._config = config
@@ -108,6 +116,30 @@ class AutomaticCycle:
         # The board on the table is the one just finished: wait until it is taken off.
         self.board_already_cut = board_already_cut
         self.plan_counter = 0
+        # An interrupted board: clear of it first (spindle off), then resume or abandon.
+        self._continue_job = continue_job
+        self.resume = resume
+        self._continue_future: concurrent.futures.Future[Any] | None = None
+        self.continuation: Continuation | None = None
+        self._cut_executor: PathExecutor | None = None
+        self._interrupted_phase = interrupted_phase
+
+    @property
+    def is_continuation(self) -> bool:
+        """True for the cycle that resumes or abandons an interrupted board."""
+        return self._continue_job is not None
+
+    @property
+    def board_partly_cut(self) -> bool:
+        """True once the cut has begun on this board (or it had begun before)."""
+        return self.is_continuation or self._cut_executor is not None
+
+    @property
+    def cut_phase(self) -> Phase | None:
+        """The phase of the cut the board is in (where a resume must go on from)."""
+        if self._cut_executor is not None:
+            return self._cut_executor.last_output.phase
+        return self._interrupted_phase
 
     # -- helpers ---------------------------------------------------------------------------
     def _go(self, step: CycleStep, now_s: float) -> None:
@@ -159,8 +191,9 @@ class AutomaticCycle:
         self._stop_requested = True
         if self.executor is not None:
             self.executor.abort()
-        if self._plan_future is not None:
-            self._plan_future.cancel()
+        for future in (self._plan_future, self._continue_future):
+            if future is not None:
+                future.cancel()
 
     # -- the sequence ----------------------------------------------------------------------
     def tick(
@@ -176,7 +209,21 @@ class AutomaticCycle:
         ):
             raise CycleFault("E044", f"the part-present sensor went off while {step.value}")
 
-        if step is CycleStep.WAIT_FOR_PART:
+        if step is CycleStep.WAIT_FOR_PART and self._continue_job is not None:
+            if not inputs.part_present:
+                raise CycleFault("E044", "the partly cut board is no longer on the table")
+            outputs = replace(outputs, spindle_on=False)
+            # Enabled and planned from rest only: an axis still running down after the
+            # interruption would start the retract from a position it has already left.
+            if not axes.standing_still(0.01):
+                return outputs
+            if axes.request_enable() and axes.all_enabled():
+                job, start = self._continue_job, axes.positions()
+                self._continue_future = self._submit(lambda: job(start))
+                self._go(CycleStep.RETRACTING, now_s)
+        elif step is CycleStep.RETRACTING:
+            outputs = self._retract(now_s, outputs, axes)
+        elif step is CycleStep.WAIT_FOR_PART:
             axes.request_enable()
             if not inputs.part_present:
                 self.board_already_cut = False
@@ -224,7 +271,8 @@ class AutomaticCycle:
                 assert self.planned is not None
                 self.executor = PathExecutor(self.planned.plan, self._config.period_s)
                 self.executor.set_override(self._override_pct)
-                self._go(CycleStep.CUTTING_A, now_s)
+                self._cut_executor = self.executor
+                self._go(_PHASE_STEPS[self.executor.phase], now_s)
         elif step in (
             CycleStep.CUTTING_A,
             CycleStep.REPOSITIONING,
@@ -264,7 +312,10 @@ class AutomaticCycle:
             width_mm = reading.width_mm
             self.outcome.width_mm = width_mm
             start = axes.positions()
-            self._plan_future = self._submit(lambda: self._plan_job(width_mm, start))
+            plan_job = self._plan_job
+            if plan_job is None:
+                raise CycleFault("E090", "the cycle has no planning job", "cycle")
+            self._plan_future = self._submit(lambda: plan_job(width_mm, start))
             return outputs
         if not self._plan_future.done():
             return outputs
@@ -283,6 +334,46 @@ class AutomaticCycle:
         self.outcome.cut_length_b_mm = planned.plan.cut_length_mm("B")
         self._go(CycleStep.STARTING_SPINDLE, now_s)
         return replace(outputs, spindle_on=True)
+
+    def _retract(self, now_s: float, outputs: OutputImage, axes: AxisGroup) -> OutputImage:
+        """Spindle off: back along the cut and around the board to the next lead-in (resume)
+        or to home (abandon); then start the spindle, or unclamp."""
+        outputs = replace(outputs, spindle_on=False)
+        if self.continuation is None:
+            future = self._continue_future
+            if future is None or not future.done():
+                return outputs
+            try:
+                planned, continuation = future.result()
+            except PlanningError as exc:
+                raise CycleFault(exc.code, str(exc), "recipe") from exc
+            except KeepOutRefused as exc:
+                raise CycleFault("E052", str(exc), "keep-out") from exc
+            except Exception as exc:
+                raise CycleFault("E051", f"{type(exc).__name__}: {exc}", "planner") from exc
+            self.continuation = continuation
+            self.outcome.width_mm = planned.width_mm
+            self.outcome.d_mm = planned.profile.D
+            self.outcome.r_mm = planned.profile.R
+            self.outcome.tilt_deg = planned.tilt_deg
+            if continuation.cut is not None:
+                self.planned = replace(planned, plan=continuation.cut)
+                self.plan_counter += 1
+            if continuation.clear is not None:
+                self.executor = PathExecutor(continuation.clear, self._config.period_s)
+                self.executor.set_override(self._override_pct)
+        executor = self.executor
+        if executor is not None and not executor.done:
+            out = executor.step()
+            self.last_output = out
+            axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
+            if not out.done:
+                return outputs
+        if self.continuation.cut is not None:
+            self._go(CycleStep.STARTING_SPINDLE, now_s)
+            return outputs
+        self._go(CycleStep.UNCLAMPING, now_s)
+        return replace(outputs, clamps_close=False)
 
     def _cut(
         self, now_s: float, inputs: InputImage, outputs: OutputImage, axes: AxisGroup

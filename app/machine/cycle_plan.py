@@ -18,6 +18,7 @@ from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
 from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, cut_stave
 from app.geometry.toolpath import ToolPath
+from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.stave_plan import StavePlan, plan_stave
 
@@ -65,7 +66,8 @@ def plan_board(
     """Validate the measured width against the recipe and the machine, then plan the cut.
 
     Raises PlanningError with alarm E032 (width not allowed), E050 (outside the travel) or
-    E051 (the planner failed), never anything else."""
+    E051 (the planner failed), E052 (the approach would cross the board), never anything
+    else."""
     try:
         cut = cut_stave(recipe.stave, width_mm, params, stave_limits)
     except StaveCutRefused as exc:
@@ -76,6 +78,8 @@ def plan_board(
         raise PlanningError(code, message, exc.errors) from exc
     try:
         plan = plan_stave(cut.toolpath, start_xyz, motion_limits)
+    except KeepOutRefused as exc:
+        raise PlanningError("E052", str(exc)) from exc
     except (ValueError, ArithmeticError) as exc:
         raise PlanningError("E051", str(exc)) from exc
     return PlannedStave(cut, plan)

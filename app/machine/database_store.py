@@ -32,6 +32,7 @@ from app.data.database import Database
 from app.data.errors import DataError, NotFoundError, StorageError
 from app.data.pending import (
     AlarmWrite,
+    MachineStateWrite,
     PendingWrite,
     PieceWrite,
     SeedParametersWrite,
@@ -43,11 +44,14 @@ from app.data.records import AlarmEvent, PieceResult, ProductionRecord
 from app.data.records import AlarmState as StoredAlarmState
 from app.data.users import Role, User
 from app.machine.alarms import AlarmTransition
+from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.process_params import config_parameters, stave_limits
 from app.machine.snapshot import AlarmState
 from app.machine.store import PieceRecord
 
 log = logging.getLogger(__name__)
+
+INTERRUPTED_KEY = "interrupted_board"
 
 _ALARM_STATES = {
     AlarmState.NORMAL: StoredAlarmState.NORMAL,
@@ -73,6 +77,7 @@ def production_record(piece: PieceRecord) -> ProductionRecord:
         result=PieceResult(piece.result),
         alarm_code=piece.alarm_code,
         tilt_deg=piece.tilt_deg,
+        resumed=piece.resumed,
     )
 
 
@@ -112,6 +117,8 @@ def apply_write(db: Database, write: PendingWrite) -> None:
         db.record_piece(write.record, skip_if_stored=True)
     elif isinstance(write, AlarmWrite):
         db.record_alarm_event(write.event, skip_if_stored=True)
+    elif isinstance(write, MachineStateWrite):
+        db.set_machine_state(write.key, write.value)
     elif not db.parameter_history(limit=1):  # still untuned: nobody has changed anything since
         db.set_parameters(write.values, _service_user(db))
 
@@ -147,6 +154,15 @@ class DurableWriter:
     def pending(self) -> int:
         with self._lock:
             return len(self._pending)
+
+    def waiting_state(self, key: str) -> tuple[bool, str | None]:
+        """(True, value) of the newest machine-state write of ``key`` not stored yet, or
+        (False, None): what a read must see before the database has it."""
+        with self._lock:
+            for write, _t in reversed(self._pending):
+                if isinstance(write, MachineStateWrite) and write.key == key:
+                    return True, write.value
+        return False, None
 
     def oldest_age_s(self) -> float:
         with self._lock:
@@ -243,6 +259,23 @@ class DatabaseStore:
     def unstored_age_s(self) -> float:
         """How long the oldest record not yet in the database has waited (0: none waits)."""
         return self.writer.oldest_age_s()
+
+    def interrupted_board(self) -> InterruptedBoard | None:
+        waiting, text = self.writer.waiting_state(INTERRUPTED_KEY)
+        if not waiting:
+            text = self.db.machine_state(INTERRUPTED_KEY)
+        if text is None:
+            return None
+        try:
+            return InterruptedBoard.from_json(text)
+        except InterruptedRecordError as exc:
+            # Unreadable: the board's state is unknown, which the caller treats as the
+            # worst case (a board on the table): never as "nothing was cut".
+            log.error("%s", exc)
+            raise
+
+    def save_interrupted_board(self, board: InterruptedBoard | None) -> None:
+        self._submit(MachineStateWrite(INTERRUPTED_KEY, None if board is None else board.to_json()))
 
     def close(self) -> None:
         self.writer.flush(self.db)

@@ -21,6 +21,8 @@ class Facts:
     inputs: InputImage
     cycle_running: bool  # an automatic cycle is between its first and its last step
     simulation: bool
+    interrupted: bool = False  # a board on the table is partly cut (resume or abandon it)
+    interrupted_unclamped: bool = False  # ... and the clamps have opened since
 
 
 def _latched(facts: Facts) -> str:
@@ -44,9 +46,41 @@ def may_start(f: Facts) -> str:
             if not f.all_homed
             else f"not possible while {f.state.value}"
         )
+    if f.interrupted:
+        return "a board is partly cut: Resume or Abandon it"
     if not f.recipe_loaded:
         return "select a recipe first"
     if not f.inputs.guard_closed:
+        return "close the guard first"
+    return ""
+
+
+def may_resume(f: Facts) -> str:
+    if not f.interrupted:
+        return "no board is partly cut"
+    if reason := _latched(f):
+        return reason
+    if f.state is not MachineState.READY or not f.all_homed:
+        return (
+            "axes are not homed: abandon the board (their position is unknown)"
+            if not f.all_homed
+            else f"not possible while {f.state.value}"
+        )
+    if f.interrupted_unclamped or not (f.inputs.part_present and f.inputs.clamps_closed):
+        return "the board was unclamped: it may have moved, abandon it"
+    if not f.inputs.guard_closed:
+        return "close the guard first"
+    return ""
+
+
+def may_abandon(f: Facts) -> str:
+    if not f.interrupted:
+        return "no board is partly cut"
+    if reason := _latched(f):
+        return reason
+    if f.state not in (MachineState.READY, MachineState.NOT_HOMED):
+        return f"not possible while {f.state.value}"
+    if f.all_homed and not f.inputs.guard_closed:
         return "close the guard first"
     return ""
 
@@ -77,6 +111,13 @@ def may_home(f: Facts) -> str:
         return f"machine is busy ({f.state.value}): stop it first"
     if not f.inputs.guard_closed and f.state is not MachineState.MANUAL:
         return "close the guard first"
+    if f.interrupted:
+        return "a board is partly cut: Resume or Abandon it first"
+    if (f.inputs.part_present or f.inputs.clamps_closed) and not f.all_homed:
+        return (
+            "a board is on the table and the axes do not know where they are: "
+            "take the board off before homing"
+        )
     return ""
 
 
@@ -123,6 +164,8 @@ def always(_f: Facts) -> str:
 # command class name -> rule
 RULES = {
     "Start": may_start,
+    "Resume": may_resume,
+    "Abandon": may_abandon,
     "Stop": may_stop,
     "Reset": may_reset,
     "Home": may_home,

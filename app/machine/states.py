@@ -53,6 +53,7 @@ class CycleStep(enum.Enum):
     CENTERING = "centering"
     CLAMPING = "clamping"
     MEASURING = "measuring"
+    RETRACTING = "moving clear of the board"
     STARTING_SPINDLE = "starting spindle"
     CUTTING_A = "cutting side A"
     REPOSITIONING = "repositioning and tilting"

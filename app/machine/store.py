@@ -13,6 +13,7 @@ from typing import Protocol
 
 from app.data.recipe import Recipe
 from app.machine.alarms import AlarmTransition
+from app.machine.interrupted import InterruptedBoard
 
 RECORD_DELAY_ALARM_S = 60.0
 """A record not stored after this long raises W103 (the database is busy or unavailable)."""
@@ -32,6 +33,7 @@ class PieceRecord:
     cycle_time_s: float
     result: str  # "ok", "rejected" or "aborted"
     alarm_code: str | None = None
+    resumed: bool = False  # an interrupted cut, resumed and completed
 
 
 class MachineStore(Protocol):
@@ -57,6 +59,14 @@ class MachineStore(Protocol):
 
     def unstored_age_s(self) -> float:
         """How long the oldest record not yet in the database has waited (0: none waits)."""
+        ...
+
+    def interrupted_board(self) -> InterruptedBoard | None:
+        """The board whose cut began and did not end, if any (survives a restart)."""
+        ...
+
+    def save_interrupted_board(self, board: InterruptedBoard | None) -> None:
+        """Remember (or with None forget) the interrupted board."""
         ...
 
     def close(self) -> None: ...

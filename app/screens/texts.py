@@ -38,6 +38,7 @@ _STEPS: dict[CycleStep, str] = {
     CycleStep.CENTERING: QT_TRANSLATE_NOOP("Steps", "Centering"),
     CycleStep.CLAMPING: QT_TRANSLATE_NOOP("Steps", "Clamping"),
     CycleStep.MEASURING: QT_TRANSLATE_NOOP("Steps", "Measuring the width"),
+    CycleStep.RETRACTING: QT_TRANSLATE_NOOP("Steps", "Moving clear of the board"),
     CycleStep.STARTING_SPINDLE: QT_TRANSLATE_NOOP("Steps", "Starting the spindle"),
     CycleStep.CUTTING_A: QT_TRANSLATE_NOOP("Steps", "Cutting side A"),
     CycleStep.REPOSITIONING: QT_TRANSLATE_NOOP("Steps", "Repositioning and tilting"),

@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+50" />
+        <location filename="../../app/screens/texts.py" line="+51" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+31" />
+        <location filename="catalogue_strings.py" line="+32" />
         <source>Axis lost its home position</source>
         <translation>Axis lost its home position</translation>
     </message>
@@ -129,6 +129,11 @@
         <location line="+1" />
         <source>Measured width not allowed for this recipe</source>
         <translation>Measured width not allowed for this recipe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move refused: it would cross the board</source>
+        <translation>Move refused: it would cross the board</translation>
     </message>
     <message>
         <location line="+1" />
@@ -390,7 +395,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-48" />
+        <location filename="catalogue_strings.py" line="-50" />
         <source>a cycle is already running</source>
         <translation>a cycle is already running</translation>
     </message>
@@ -443,6 +448,11 @@
         <location line="+1" />
         <source>machine is still starting up</source>
         <translation>machine is still starting up</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no board is partly cut</source>
+        <translation>no board is partly cut</translation>
     </message>
     <message>
         <location line="+1" />
@@ -950,7 +960,7 @@ shift</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+25" />
+        <location filename="catalogue_strings.py" line="+26" />
         <source>Distance beyond the board's right end where the tilt changes sides</source>
         <translation>Distance beyond the board's right end where the tilt changes sides</translation>
     </message>
@@ -1506,7 +1516,7 @@ shift</translation>
 <context>
     <name>States</name>
     <message>
-        <location line="-43" />
+        <location line="-44" />
         <source>STARTING UP</source>
         <translation>STARTING UP</translation>
     </message>
@@ -1551,7 +1561,7 @@ shift</translation>
         <translation>EMERGENCY STOP</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+51" />
         <source>NO MACHINE</source>
         <translation>NO MACHINE</translation>
     </message>
@@ -1559,7 +1569,7 @@ shift</translation>
 <context>
     <name>Steps</name>
     <message>
-        <location line="-46" />
+        <location line="-47" />
         <source>Waiting for a board</source>
         <translation>Waiting for a board</translation>
     </message>
@@ -1577,6 +1587,11 @@ shift</translation>
         <location line="+1" />
         <source>Measuring the width</source>
         <translation>Measuring the width</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Moving clear of the board</source>
+        <translation>Moving clear of the board</translation>
     </message>
     <message>
         <location line="+1" />

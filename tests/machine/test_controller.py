@@ -43,7 +43,7 @@ def test_full_cycle_counts_and_records_the_piece(ready_rig: Rig, tmp_path) -> No
 
     rig.until(done, 200.0)
     assert rig.controller.pieces_total == 1 and rig.controller.pieces_shift == 1
-    assert set(CycleStep) - {CycleStep.WAIT_FOR_PART} <= seen
+    assert set(CycleStep) - {CycleStep.WAIT_FOR_PART, CycleStep.RETRACTING} <= seen
     assert not rig.world.outputs.spindle_on and not rig.world.outputs.clamps_close
     last = rig.controller.finished_cycles[-1][0]
     assert last.result == "ok" and 140 < last.width_mm < 160
@@ -74,7 +74,9 @@ def test_stop_during_cut_is_controlled_and_nothing_resumes(ready_rig: Rig) -> No
     rig.run(5.0)
     assert rig.positions() == pytest.approx(still, abs=0.01)
     assert not rig.world.outputs.spindle_on
-    assert rig.controller.finished_cycles[-1][0].result == "aborted"
+    interrupted = rig.controller.interrupted
+    assert interrupted is not None and interrupted.reason == "stop"
+    assert rig.controller.pieces_total == 0, "a partly cut board is not a piece"
 
 
 def test_second_stop_within_lockout_is_ignored(ready_rig: Rig) -> None:

@@ -15,8 +15,9 @@ each chunk time-optimally (see ``chunk.py``):
   jerk-limited profile during the X-Y travel and arriving with it (overlap). The tool path
   keeps travel moves out of its keep-out box, which is sized for the largest tilt of the
   cycle, so every tilt in between is safe anywhere along those moves;
-* if the machine is not at the tool path's first point, a straight synchronised move there
-  is prepended (phase APPROACH);
+* if the machine is not at the tool path's first point, a move there is prepended (phase
+  APPROACH), routed around the board's keep-out box (``keepout.py``), or refused
+  (:class:`KeepOutRefused`) when the machine stands over the board;
 * before each side the axes dwell ``settle_s`` at rest at the lead-in start (in the phase
   before the cut), so the servo has settled from the travel's last corner when the cut
   begins.
@@ -35,9 +36,9 @@ from app.geometry.segments import ArcSegment, Segment
 from app.geometry.toolpath import ToolPath
 from app.machine.planner.chunk import Chunk, make_chunk, make_dwell
 from app.machine.planner.chunked import ChunkedTrajectory
+from app.machine.planner.keepout import TableKeepOut, routed_chunks
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.path import ArcPiece, FloatArray, LinePiece, Path, Piece
-from app.machine.planner.point_to_point import point_to_point_chunk
 from app.machine.planner.trajectory import Phase, PlannerError
 
 DEFAULT_SETTLE_S = 0.1
@@ -109,7 +110,8 @@ class _PhaseTracker:
             return _CUT_PHASES[segment.side]
         if not self.sides:
             return Phase.APPROACH
-        return Phase.REPOSITION if len(self.sides) == 1 else Phase.RETURN
+        # A resumed cut may begin with side B: after B comes the return, whatever came before.
+        return Phase.REPOSITION if self.sides[-1] == "A" else Phase.RETURN
 
 
 def _chunk(run: Sequence[Segment], phase: Phase, limits: MotionLimits) -> Chunk:
@@ -127,12 +129,13 @@ def _chunks(
     if not segments:
         raise PlannerError("the tool path has no segments")
     first = segments[0]
-    chunks: list[Chunk] = []
-    lead = point_to_point_chunk(
-        start_xyz, (*first.start, first.z_start_deg), limits, Phase.APPROACH
+    chunks: list[Chunk] = routed_chunks(
+        TableKeepOut.around_toolpath(toolpath),
+        start_xyz,
+        (*first.start, first.z_start_deg),
+        limits,
+        Phase.APPROACH,
     )
-    if lead is not None:
-        chunks.append(lead)
     tracker = _PhaseTracker()
     run: list[Segment] = []
     run_phase = Phase.APPROACH

@@ -26,6 +26,7 @@ class Phase(enum.Enum):
     CUT_B = "cut side B"  # lead-in, P5 -> P8, lead-out
     RETURN = "return"  # to the home position
     POINT_TO_POINT = "point to point"  # a single move outside the cycle
+    RETRACT = "retract"  # spindle off: back along the cut and around the board (resume, abandon)
 
 
 @dataclass(frozen=True)
