@@ -231,6 +231,7 @@ def production_fields(record: ProductionRecord) -> dict[str, Any]:
         "cycle_time_s": float(record.cycle_time_s),
         "result": record.result.value,
         "alarm_code": record.alarm_code,
+        "resumed": int(bool(record.resumed)),
     }
 
 
@@ -248,6 +249,8 @@ def production_from_fields(fields: Fields) -> ProductionRecord:
         cycle_time_s=float(fields["cycle_time_s"]),
         result=PieceResult(fields["result"]),
         alarm_code=fields["alarm_code"],
+        # Journal lines written before the column existed have no "resumed".
+        resumed=bool(fields["resumed"]) if "resumed" in fields.keys() else False,
     )
 
 

@@ -47,6 +47,11 @@
     <name>AlarmText</name>
     <message>
         <location filename="catalogue_strings.py" line="+32" />
+        <source>A drive or the I/O refused a request</source>
+        <translation>A drive or the I/O refused a request</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Axis lost its home position</source>
         <translation>Axis lost its home position</translation>
     </message>
@@ -134,6 +139,16 @@
         <location line="+1" />
         <source>Move refused: it would cross the board</source>
         <translation>Move refused: it would cross the board</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>PIN entry locked after repeated wrong PINs</source>
+        <translation>PIN entry locked after repeated wrong PINs</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Records waiting for the database</source>
+        <translation>Records waiting for the database</translation>
     </message>
     <message>
         <location line="+1" />
@@ -395,7 +410,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-50" />
+        <location filename="catalogue_strings.py" line="-53" />
         <source>a cycle is already running</source>
         <translation>a cycle is already running</translation>
     </message>
@@ -960,7 +975,7 @@ shift</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+26" />
+        <location filename="catalogue_strings.py" line="+29" />
         <source>Distance beyond the board's right end where the tilt changes sides</source>
         <translation>Distance beyond the board's right end where the tilt changes sides</translation>
     </message>

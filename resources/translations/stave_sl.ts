@@ -47,6 +47,11 @@
     <name>AlarmText</name>
     <message>
         <location filename="catalogue_strings.py" line="+32"/>
+        <source>A drive or the I/O refused a request</source>
+        <translation>Pogon ali V/I je zavrnil zahtevo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Axis lost its home position</source>
         <translation>Os je izgubila referenčno lego</translation>
     </message>
@@ -134,6 +139,16 @@
         <location line="+1"/>
         <source>Move refused: it would cross the board</source>
         <translation>Premik zavrnjen: šel bi čez desko</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PIN entry locked after repeated wrong PINs</source>
+        <translation>Vnos PIN zaklenjen po ponavljajočih se napačnih PIN-ih</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Records waiting for the database</source>
+        <translation>Zapisi čakajo na podatkovno bazo</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -395,7 +410,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-50"/>
+        <location filename="catalogue_strings.py" line="-53"/>
         <source>a cycle is already running</source>
         <translation>cikel že teče</translation>
     </message>
@@ -960,7 +975,7 @@ izmena</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+26"/>
+        <location filename="catalogue_strings.py" line="+29"/>
         <source>Distance beyond the board&apos;s right end where the tilt changes sides</source>
         <translation>Razdalja za desnim koncem deske, kjer se nagib zamenja</translation>
     </message>
