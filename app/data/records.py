@@ -249,8 +249,9 @@ def production_from_fields(fields: Fields) -> ProductionRecord:
         cycle_time_s=float(fields["cycle_time_s"]),
         result=PieceResult(fields["result"]),
         alarm_code=fields["alarm_code"],
-        # Journal lines written before the column existed have no "resumed".
-        resumed=bool(fields["resumed"]) if "resumed" in fields.keys() else False,
+        # Journal lines written before the column existed have no "resumed"; keys(), because
+        # `in` on an sqlite3.Row looks at the values.
+        resumed=bool(fields["resumed"]) if "resumed" in fields.keys() else False,  # noqa: SIM118
     )
 
 
