@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -18,11 +19,13 @@ BARRIQUE = "Barrique 225 l Bordeaux"
 class Rig:
     """The machine and the simulated world, with the operator's usual gestures."""
 
-    def __init__(self, runtime: MachineRuntime) -> None:
+    def __init__(self, runtime: MachineRuntime, world: Any = None, faults: Any = None) -> None:
+        """``world`` and ``faults``: the simulated machine behind a fieldbus backend (the
+        Modbus emulator's world); by default the simulation backend's own."""
         self.runtime = runtime
         self.controller = runtime.controller
-        self.world = runtime.backend.extras["world"]
-        self.faults = runtime.backend.extras["faults"]
+        self.world = world if world is not None else runtime.backend.extras["world"]
+        self.faults = faults if faults is not None else runtime.backend.extras["faults"]
 
     @property
     def state(self) -> MachineState:

@@ -6,15 +6,24 @@ Axes have absolute encoders here so that no case spends time homing."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
-from app.config import load_config
+from app.config import MachineConfig, load_config
+from app.drivers.modbus.emulator import ModbusEmulator
+from app.drivers.sim.faults import SimFaultInjector
+from app.drivers.sim.gauge import SimGauge
+from app.drivers.sim.settings import parse_gauge_settings
 from app.machine import commands as cmd
+from app.machine.database_store import open_store
+from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState
-from tests.machine.conftest import make_rig
+from tests.drivers.modbus.helpers import tcp_modbus
+from tests.machine.conftest import Rig, make_rig
 
 S = CycleStep
 BEFORE_MOTION = (S.CENTERING, S.CLAMPING, S.MEASURING, S.STARTING_SPINDLE)
@@ -55,11 +64,69 @@ CASES = [
 COVERED: list[str] = []
 
 
+# On Modbus every period is real TCP exchanges with the emulator (eight transactions), so
+# the matrix runs there on the pairs that go through the drive layer and the coupler while
+# the cutter moves: a drive fault, a following error, a limit switch, the E-stop (safe torque
+# off), the link lost, a clamp sensor and the spindle seen over the coupler. The gauge rows are the gauge's, whatever
+# the motion backend, and stay on the simulation.
+MODBUS_PAIRS: tuple[tuple[str, str, CycleStep], ...] = (
+    ("drive_fault", "X", S.CUTTING_A),
+    ("following_error", "Y", S.CUTTING_B),
+    ("estop", "", S.CUTTING_A),
+    ("comms_loss", "", S.CUTTING_B),
+    ("clamp_sensor", "open", S.CUTTING_A),
+    ("limit_switch", "X", S.RETURNING),
+    ("spindle", "", S.CUTTING_B),
+)
+MODBUS_CASES = [case for case in CASES if case[:3] in MODBUS_PAIRS]
+
+
 @pytest.fixture(scope="module")
 def absolute_config():  # type: ignore[no-untyped-def]
     config = load_config()
     axes = {n: replace(a, absolute_encoder=True) for n, a in config.axes.items()}
     return replace(config, axes=axes)
+
+
+@contextmanager
+def sim_rig(config: MachineConfig, tmp_path: Path) -> Iterator[Rig]:
+    rig = make_rig(tmp_path, config)
+    try:
+        yield rig
+    finally:
+        rig.runtime.shutdown()
+
+
+@contextmanager
+def modbus_rig(config: MachineConfig, tmp_path: Path) -> Iterator[Rig]:
+    """The same machine behind the Modbus backend: the emulator serves the simulated world
+    over loopback TCP, faults are injected into that world (a comms_loss cuts the wire)."""
+
+    def on_modbus(port: int) -> MachineConfig:
+        modbus = tcp_modbus(port, timeout_ms=250.0, retries=0)
+        return replace(
+            config,
+            backend="modbus",
+            backend_settings={**config.backend_settings, "modbus": modbus},
+            period_s=0.05,  # fewer periods: each one is real TCP exchanges with every device
+        )
+
+    emulator = ModbusEmulator(on_modbus(502))
+    runtime: MachineRuntime | None = None
+    try:
+        machine = on_modbus(emulator.serve_tcp())
+        # The gauge measures the emulated world's board, as the sim gauge does on the sim.
+        gauge = SimGauge(parse_gauge_settings({}), emulator.world, machine.period_s)
+        gauge.configure()
+        store = open_store(tmp_path / "stave.db", machine, threaded=False)
+        runtime = MachineRuntime(machine, store, gauge=gauge)
+        runtime.on_tick.append(lambda rt: emulator.emulation.follow_clock(rt.time_s))
+        runtime.start()
+        yield Rig(runtime, emulator.world, SimFaultInjector(emulator.world))
+    finally:
+        if runtime is not None:
+            runtime.shutdown()
+        emulator.stop()
 
 
 @pytest.mark.parametrize(
@@ -76,34 +143,57 @@ def test_fault_at_step(
     absolute_config,
     tmp_path: Path,
 ) -> None:
-    rig = make_rig(tmp_path, absolute_config)
-    try:
-        assert rig.state is MachineState.READY
-        rig.select("Barrique 225 l Bordeaux")
-        rig.load(150.0)
-        rig.send(cmd.Start())
-        rig.until(lambda c: c.cycle is not None and c.cycle.step is step, 120.0)
-        rig.faults.inject(kind, target)
-        rig.until(lambda c: c.state in LATCHED_STATES, 30.0)
-        assert rig.state is latched
-        codes = {a.code for a in rig.controller.snapshot().alarms}
-        assert code in codes, f"expected {code}, got {codes}"
-        rig.run(3.0)  # stopping ramps end (and a lost link's watchdogs act)
-        assert not rig.world.outputs.spindle_on
-        still = rig.positions()
-        rig.run(3.0)
-        assert rig.positions() == pytest.approx(still, abs=0.01), "moved while latched"
-        assert not rig.moving()
+    with sim_rig(absolute_config, tmp_path) as rig:
+        run_case(rig, kind, target, step, code, latched)
+    COVERED.append(f"{kind}:{target}@{step.name.lower()}")
 
-        rig.faults.clear_injections()
-        rig.send(cmd.Reset(), run_s=1.0)
-        assert rig.state in (MachineState.READY, MachineState.NOT_HOMED), rig.controller.message
-        rig.run(2.0)
-        assert rig.positions() == pytest.approx(still, abs=0.01), "moved after Reset alone"
-        assert not any(a.enabled for a in rig.controller.snapshot().axes)
-        COVERED.append(f"{kind}:{target}@{step.name.lower()}")
-    finally:
-        rig.runtime.shutdown()
+
+@pytest.mark.parametrize(
+    ("kind", "target", "step", "code", "latched"),
+    MODBUS_CASES,
+    ids=[f"{k}:{t}@{s.name.lower()}" for k, t, s, _c, _l in MODBUS_CASES],
+)
+def test_fault_at_step_on_modbus(
+    kind: str,
+    target: str,
+    step: CycleStep,
+    code: str,
+    latched: MachineState,
+    absolute_config,
+    tmp_path: Path,
+) -> None:
+    with modbus_rig(absolute_config, tmp_path) as rig:
+        run_case(rig, kind, target, step, code, latched)
+
+
+def run_case(
+    rig: Rig, kind: str, target: str, step: CycleStep, code: str, latched: MachineState
+) -> None:
+    """Start a cycle, inject at ``step``, check the stop, the alarm, the latch, and that a
+    Reset alone moves nothing."""
+    assert rig.state is MachineState.READY
+    rig.select("Barrique 225 l Bordeaux")
+    rig.load(150.0)
+    rig.send(cmd.Start())
+    rig.until(lambda c: c.cycle is not None and c.cycle.step is step, 120.0)
+    rig.faults.inject(kind, target)
+    rig.until(lambda c: c.state in LATCHED_STATES, 30.0)
+    assert rig.state is latched
+    codes = {a.code for a in rig.controller.snapshot().alarms}
+    assert code in codes, f"expected {code}, got {codes}"
+    rig.run(3.0)  # stopping ramps end (and a lost link's watchdogs act)
+    assert not rig.world.outputs.spindle_on
+    still = rig.positions()
+    rig.run(3.0)
+    assert rig.positions() == pytest.approx(still, abs=0.01), "moved while latched"
+    assert not rig.moving()
+
+    rig.faults.clear_injections()
+    rig.send(cmd.Reset(), run_s=1.0)
+    assert rig.state in (MachineState.READY, MachineState.NOT_HOMED), rig.controller.message
+    rig.run(2.0)
+    assert rig.positions() == pytest.approx(still, abs=0.01), "moved after Reset alone"
+    assert not any(a.enabled for a in rig.controller.snapshot().axes)
 
 
 def test_matrix_report(capsys: pytest.CaptureFixture[str]) -> None:

@@ -166,6 +166,16 @@ class MachineEmulation:
             return self.settings.coupler.device_id
         return self.settings.drives[name].device_id
 
+    def follow_clock(self, time_s: float) -> None:
+        """Let world time pass while the master is silent (its link lost, its process
+        stopped): when the reads have fallen more than two periods behind ``time_s``, the
+        world catches up, so that the drives' and the coupler's watchdogs act as they would
+        on the machine, where time does not wait for the master."""
+        world = self.world
+        with self.lock:
+            while world.time_s < time_s - 2 * world.period_s:
+                world.advance(world.period_s)
+
     def on_status_read(self, name: str) -> None:
         """A device's status block is read: the second read of the same device since the
         last advance starts the next period."""

@@ -182,9 +182,19 @@ class ModbusEmulator:
         return None
 
     def _trace_packet(self, unit_offset: int) -> Callable[[bool, bytes], bytes]:
+        """Replies of a muted unit, or of a unit whose link the simulated world has cut (a
+        comms_loss injected into the world), never leave the server."""
+        links = {
+            self.emulation.unit_of(name): "io" if name == "io" else "drives"
+            for name in self.emulation.device_names()
+        }
+        world = self.world
+
         def trace(sending: bool, data: bytes) -> bytes:
-            if sending and len(data) > unit_offset and data[unit_offset] in self._muted_units:
-                return b""
+            if sending and len(data) > unit_offset:
+                unit = data[unit_offset]
+                if unit in self._muted_units or not world.link_ok(links.get(unit, "drives")):
+                    return b""
             return data
 
         return trace
