@@ -66,9 +66,9 @@ COVERED: list[str] = []
 
 # On Modbus every period is real TCP exchanges with the emulator (eight transactions), so
 # the matrix runs there on the pairs that go through the drive layer and the coupler while
-# the cutter moves: a drive fault, a following error, a limit switch, the E-stop (safe torque
-# off), the link lost, a clamp sensor and the spindle seen over the coupler. The gauge rows are the gauge's, whatever
-# the motion backend, and stay on the simulation.
+# the cutter moves: a drive fault, a following error, a limit switch, the E-stop (safe
+# torque off), the link lost, a clamp sensor and the spindle seen over the coupler. The
+# gauge rows are the gauge's, whatever the motion backend, and stay on the simulation.
 MODBUS_PAIRS: tuple[tuple[str, str, CycleStep], ...] = (
     ("drive_fault", "X", S.CUTTING_A),
     ("following_error", "Y", S.CUTTING_B),
