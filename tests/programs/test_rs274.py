@@ -18,6 +18,7 @@ from app.machine.program_export import (
     ExportOptions,
     export_program,
     parametric_stave,
+    program_info,
     stave_toolpath,
 )
 from tests.programs.conftest import LIMITS, PARAMS
@@ -256,3 +257,30 @@ def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path
     compare(toolpath, _run(tmp_path, chords, "chords.ngc"), 0.02)
     with pytest.raises(GeometryError, match=f"profile_kind = '{kind}' has no parametric program"):
         export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
+
+
+def test_two_bevels_each_side_its_own_tilt_offset_and_pivot_shift(tmp_path: Path) -> None:
+    """Side A at +alpha_A, side B at -alpha_B (a barrel whose joints differ): the fixed and the
+    parametric programs follow the tool path of both bevels."""
+    from dataclasses import replace
+    from datetime import UTC, datetime
+
+    from app.geometry.profile import solve_profile
+    from app.geometry.toolpath import ToolPathParams, build_toolpath
+    from app.programs import linuxcnc
+    from app.programs.moves import stave_moves
+    from app.programs.parametric import write_parametric_program
+    from tests.programs.conftest import RECIPES
+
+    recipe = RECIPES[2]
+    info = program_info(recipe, None, PARAMS, ExportOptions(), datetime(2026, 1, 1, tzinfo=UTC))
+    stave = replace(parametric_stave(recipe, PARAMS, LIMITS), tilt_a_deg=9.5, tilt_b_deg=6.0)
+    program = write_parametric_program(stave, info)
+    for width in (120.0, 175.5, 240.0):
+        profile = solve_profile(recipe.length_mm, width, 0.3, 0.6, LIMITS)
+        params = ToolPathParams.from_parameters(PARAMS, 9.5, 6.0)
+        toolpath = build_toolpath(profile, params)
+        assert {round(s.z_end_deg, 6) for s in toolpath.side_segments("B")} == {-6.0}
+        fixed = linuxcnc.write_program(stave_moves(toolpath), replace(info, width_mm=width))
+        compare(toolpath, _run(tmp_path, fixed), None)
+        compare(toolpath, _run(tmp_path, _with_width(program, width), "p.ngc"), None)
