@@ -5,9 +5,9 @@ G94 feed in mm/min, G40 no cutter radius compensation (the path is the tool cent
 no settable zero offset (machine coordinates), G64 continuous-path mode; G0/G1/G2/G3 with
 the arc centre as I, J incremental from the arc's start (the default), `M3 S..` spindle,
 `G4 F..` dwell in seconds, `M30` end of program, comments after `;`. The tilt is the rotary
-axis A in degrees. Not checked by an interpreter: no SINUMERIK interpreter is freely
-available; the motion is the same `StaveMoves` the LinuxCNC program (checked by rs274) is
-written from.
+axis A in degrees. Not checked by a Siemens interpreter (none is freely available): the tests
+read the blocks back and run the program through a third-party Sinumerik-flavoured one; the
+motion is the same `StaveMoves` the LinuxCNC program (checked by rs274) is written from.
 """
 
 from __future__ import annotations

@@ -1,6 +1,7 @@
 """The SINUMERIK program read back block by block: the words of the 802D/840D dialect, and
-its motion (absolute X, Y, A; arc centres I, J relative to the start) against the tool path.
-No SINUMERIK interpreter is available to run it; this reads the text as the manual defines it."""
+its motion (absolute X, Y, A; arc centres I, J relative to the start) against the tool path;
+and read by a Sinumerik-flavoured interpreter we did not write (nc-gcode-interpreter). No
+Siemens control or its own interpreter runs it."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import re
 import pytest
 
 from app.data.recipe import Recipe
+from app.geometry.polyline import segment_points
 from app.geometry.segments import ArcSegment
 from app.machine.program_export import Dialect, ExportOptions, export_program, stave_toolpath
 from tests.programs.conftest import LIMITS, PARAMS
@@ -58,3 +60,61 @@ def test_words_and_motion_match_the_tool_path(recipe: Recipe) -> None:
         else:
             assert word == "G0" and block["A"] == pytest.approx(segment.z_end_deg, abs=1e-4)
         position = (block["X"], block["Y"])
+
+
+@pytest.mark.parametrize("chords_mm", [None, 0.05])
+def test_a_sinumerik_interpreter_reads_the_program_as_the_tool_path(
+    recipe: Recipe, chords_mm: float | None
+) -> None:
+    """nc-gcode-interpreter (a Sinumerik-flavoured interpreter we did not write) reads the
+    program: the modal groups are the ones meant (X-Y plane, no radius compensation, no
+    settable offset, continuous path, mm, absolute, mm/min), every block ends where the tool
+    path's move ends, at its tilt, with the feed and the spindle words; it does not check the
+    arcs' centres (that is the block test above)."""
+    import nc_gcode_interpreter as nc
+    import polars as pl
+
+    width = 175.0
+    toolpath = stave_toolpath(recipe, width, PARAMS, LIMITS)
+    options = ExportOptions(dialect=Dialect.SINUMERIK, chord_error_mm=chords_mm)
+    text = export_program(recipe, width, PARAMS, LIMITS, options)
+    frame, _state = nc.nc_to_dataframe(text, extra_axes=["A"])
+    # Blocks without a comment: the motion, M3, M5 and M30 (the others carry one).
+    rows = frame.filter(pl.col("gg01_motion").is_not_null() & pl.col("comment").is_null())
+    rows = rows.to_dicts()
+    modal = {key: rows[-1][key] for key in rows[-1] if key.startswith("gg") and key != "gg02_wait"}
+    assert modal == {
+        "gg01_motion": "G0",
+        "gg06_plane_select": "G17",
+        "gg07_tool_radius": "G40",
+        "gg08_work_offset": "G500",
+        "gg10_exact_stop_mode": "G64",
+        "gg13_wp_measure": "G71",
+        "gg14_wp_measure_mode": "G90",
+        "gg15_feed_type": "G94",
+    }
+    assert rows[-2]["M"] == ["M5"] and rows[-1]["M"] == ["M30"]
+    moves = [r for r in rows if r["M"] is None or r["M"] == ["M3"]]
+    start = moves.pop(0)
+    assert (start["X"], start["Y"], start["A"]) == pytest.approx((0.0, 0.0, 0.0))
+    spindle = moves.pop(0)
+    assert spindle["M"] == ["M3"] and spindle["S"] == 18000.0
+    ends = []
+    for segment in toolpath.segments:
+        if chords_mm is not None and isinstance(segment, ArcSegment):
+            count = len(segment_points(segment, chords_mm))
+            ends += [("G1", segment)] * (count - 1)
+        word = "G0" if not segment.cutting else "G2" if isinstance(segment, ArcSegment) else "G1"
+        ends.append(("G1" if chords_mm is not None and word == "G2" else word, segment))
+    assert len(moves) == len(ends)
+    for row, (word, segment) in zip(moves, ends, strict=True):
+        assert row["gg01_motion"] == word
+        assert row["A"] == pytest.approx(segment.z_end_deg, abs=1e-3)
+        if segment.cutting:
+            assert row["F"] == PARAMS["xy_speed_mm_s"] * 60.0
+            assert segment.distance_to((row["X"], row["Y"])) <= 1e-3
+        else:
+            assert math.dist((row["X"], row["Y"]), segment.end) <= 1e-3
+    for row, (_word, segment) in zip(moves, ends, strict=True):
+        if not (chords_mm is not None and isinstance(segment, ArcSegment)):
+            assert math.dist((row["X"], row["Y"]), segment.end) <= 1e-3
