@@ -61,6 +61,16 @@ PARAMETERS: tuple[ParameterSpec, ...] = (
     # --- System screen: tool and machine ----------------------------------------------------
     ParameterSpec("tool_radius_mm", "mm", "tool", 1, 150, 25, "Radius of the router cutter", _T),
     ParameterSpec(
+        "max_depth_of_cut_mm",
+        "mm",
+        "tool",
+        1,
+        200,
+        40,
+        "Most material the router takes off one side in one pass (more: roughing passes first)",
+        _T,
+    ),
+    ParameterSpec(
         "machine_height_mm",
         "mm",
         "tool",

@@ -9,6 +9,7 @@ Pure computation (no devices, no time): motion planning is the machine's, on top
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from enum import Enum
@@ -22,6 +23,10 @@ from app.geometry.travel import check_toolpath_travel
 
 LINE_ARC_LINE = ProfileSpec()
 """The side as it always was: two straight sections and an arc."""
+
+
+MAX_DEPTH_PARAMETER = "max_depth_of_cut_mm"
+"""The system parameter: the most material the router takes off one side in one pass."""
 
 
 @dataclass(frozen=True)
@@ -80,6 +85,11 @@ class StaveCut:
     profile: SideProfile
     toolpath: ToolPath
     board_width_mm: float | None = None
+
+    @property
+    def passes(self) -> int:
+        """Passes per side (roughing and finishing) the depth of cut needed."""
+        return self.toolpath.params.passes
 
     @property
     def depth_per_side_mm(self) -> float:
@@ -147,13 +157,31 @@ def cut_stave(
             stave.length_mm, width_mm, stave.width_ratio, stave.length_ratio, limits
         )
         board = None if board_mm == width_mm else float(board_mm)
-        toolpath = build_toolpath(profile, toolpath_params(params, tilts, board))
+        allowances = roughing_allowances_mm(
+            (float(board_mm) - profile.W1) / 2.0, params.get(MAX_DEPTH_PARAMETER)
+        )
+        path_params = replace(
+            toolpath_params(params, tilts, board), roughing_allowances_mm=allowances
+        )
+        toolpath = build_toolpath(profile, path_params)
     except GeometryError as exc:
         raise StaveCutRefused(CutStage.TOOLPATH, exc.errors, tilts) from exc
     travel = check_toolpath_travel(toolpath, limits)
     if travel:
         raise StaveCutRefused(CutStage.TRAVEL, travel, tilts)
     return StaveCut(float(width_mm), tilts, profile, toolpath, float(board_mm))
+
+
+def roughing_allowances_mm(depth_mm: float, max_depth_mm: float | None) -> tuple[float, ...]:
+    """What each roughing pass leaves on the edge when ``depth_mm`` is more than the router
+    takes in one pass: n = ceil(depth / max) equal passes, the finishing one last.
+
+    Why equal passes: each then takes at most the maximum, and the finishing pass takes as
+    little as the others, so the finished edge is not left by a heavy cut."""
+    if max_depth_mm is None or not max_depth_mm > 0 or depth_mm <= max_depth_mm:
+        return ()
+    passes = math.ceil(depth_mm / max_depth_mm - 1e-9)
+    return tuple(depth_mm * (passes - number) / passes for number in range(1, passes))
 
 
 def _target_errors(board_mm: object, target_mm: float, limits: StaveLimits) -> list[FieldError]:

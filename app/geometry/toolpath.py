@@ -112,6 +112,14 @@ class ToolPathParams:
     board_width_mm: float | None = None
     """The raw board's width when the stave is cut narrower (to a target width); travel
     moves keep clear of the whole board. None: the board is as wide as the stave."""
+    roughing_allowances_mm: tuple[float, ...] = ()
+    """Roughing passes before the finishing one, on each side: how much material each leaves
+    on the edge (mm, decreasing, > 0). Empty: one pass per side."""
+
+    @property
+    def passes(self) -> int:
+        """Passes per side: the roughing ones and the finishing one."""
+        return len(self.roughing_allowances_mm) + 1
 
     def side_tilt_deg(self, side: str) -> float:
         """The bevel of side "A" or "B" (>= 0; side B is cut at minus this)."""
@@ -143,12 +151,13 @@ class ToolPathParams:
         """From the system parameters, whose names are this class's field names (the
         database's catalogue and the machine's configuration use the same names)."""
         values = {name: float(params[name]) for name in cls.system_parameter_names()}
-        return cls(tilt_deg=tilt_deg, tilt_b_deg=tilt_b_deg, **values)
+        # The names are exactly the float fields: mypy cannot see that the dict fills no other.
+        return cls(tilt_deg=tilt_deg, tilt_b_deg=tilt_b_deg, **values)  # type: ignore[arg-type]
 
     @classmethod
     def system_parameter_names(cls) -> tuple[str, ...]:
         """The fields that are system parameters (the bevels come from the recipe and board)."""
-        board = ("tilt_deg", "tilt_b_deg", "board_width_mm")
+        board = ("tilt_deg", "tilt_b_deg", "board_width_mm", "roughing_allowances_mm")
         return tuple(f.name for f in fields(cls) if f.name not in board)
 
     @property
@@ -164,6 +173,9 @@ def validate_toolpath_params(params: ToolPathParams) -> list[FieldError]:
     for name in ToolPathParams.__dataclass_fields__:
         value = getattr(params, name)
         if name in ("tilt_b_deg", "board_width_mm") and value is None:
+            continue
+        if name == "roughing_allowances_mm":
+            _check_allowances(value, errors)
             continue
         is_number = isinstance(value, int | float) and not isinstance(value, bool)
         if not (is_number and math.isfinite(value)):
@@ -415,7 +427,53 @@ def _route(left: Point, other: Point, box: KeepOutBox, margin_mm: float) -> list
     return [left, (left[0], side_y), (other[0], side_y), other]
 
 
-def _travel(points: list[Point], z_from_deg: float, z_to_deg: float) -> list[Segment]:
+def _check_allowances(value: object, errors: list[FieldError]) -> None:
+    allowed = "a decreasing list of finite numbers > 0 mm"
+    numbers = list(value) if isinstance(value, tuple) else None
+    ok = numbers is not None and all(
+        isinstance(n, int | float) and not isinstance(n, bool) and math.isfinite(n) and n > 0
+        for n in numbers
+    )
+    if ok and numbers is not None and all(a > b for a, b in pairwise(numbers)):
+        return
+    message = f"roughing_allowances_mm = {value!r} is not allowed: {allowed}"
+    errors.append(FieldError("roughing_allowances_mm", value, allowed, message))
+
+
+def _side_passes(
+    profile: SideProfile,
+    params: ToolPathParams,
+    side: str,
+    method: CompensationMethod,
+    clear_y: float,
+) -> list[Segment]:
+    """All passes of one side, roughing first: each pass runs lead-in to lead-out, the cutter
+    then travels back round the board (at ``clear_y``, outside the keep-out box, the tilt
+    kept) to the next pass's lead-in. The travel moves carry the side, so a planner keeps
+    them in the side's cut with the spindle running."""
+    sign = SIDE_SIGN[side]
+    tilt = sign * params.side_tilt_deg(side)
+    dy = float(params.start_y_mm) - sign * params.side_pivot_shift_mm(side)
+    radius = params.side_effective_radius_mm(side)
+    segments: list[Segment] = []
+    for allowance in (*params.roughing_allowances_mm, 0.0):
+        cut = _cut_segments(
+            compensated_side(profile, side, radius + allowance, params.lead_mm, method),
+            float(params.start_x_mm),
+            dy,
+            tilt,
+        )
+        if segments:
+            end, start = segments[-1].end, cut[0].start
+            back = [end, (end[0], clear_y), (start[0], clear_y), start]
+            segments += _travel(back, tilt, tilt, side)
+        segments += cut
+    return segments
+
+
+def _travel(
+    points: list[Point], z_from_deg: float, z_to_deg: float, side: str = ""
+) -> list[Segment]:
     """Non-cutting moves through `points`, the tilt changing linearly with distance."""
     unique = [points[0]]
     for point in points[1:]:
@@ -424,7 +482,7 @@ def _travel(points: list[Point], z_from_deg: float, z_to_deg: float) -> list[Seg
     if len(unique) == 1:
         if z_from_deg == z_to_deg:
             return []
-        return [LineSegment(unique[0], unique[0], z_from_deg, z_to_deg, False, "")]
+        return [LineSegment(unique[0], unique[0], z_from_deg, z_to_deg, False, side)]
     lengths = [math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in pairwise(unique)]
     total = sum(lengths)
     segments: list[Segment] = []
@@ -439,7 +497,7 @@ def _travel(points: list[Point], z_from_deg: float, z_to_deg: float) -> list[Seg
             z_end = (
                 z_to_deg if index == last else z_from_deg + (z_to_deg - z_from_deg) * (done / total)
             )
-        segments.append(LineSegment(a, b, z_start, z_end, False, ""))
+        segments.append(LineSegment(a, b, z_start, z_end, False, side))
     return segments
 
 
@@ -525,26 +583,12 @@ def _build(profile: SideProfile, params: ToolPathParams, method: CompensationMet
     home = (float(params.home_x_mm), float(params.home_y_mm))
     alpha = params.side_tilt_deg("A")
     beta = params.side_tilt_deg("B")
-    cut_a = _cut_segments(
-        compensated_side(
-            profile, "A", params.side_effective_radius_mm("A"), params.lead_mm, method
-        ),
-        x0,
-        y0 - params.side_pivot_shift_mm("A"),
-        alpha,
-    )
-    cut_b = _cut_segments(
-        compensated_side(
-            profile, "B", params.side_effective_radius_mm("B"), params.lead_mm, method
-        ),
-        x0,
-        y0 + params.side_pivot_shift_mm("B"),
-        -beta,
-    )
+    margin = params.tilt_clearance_mm
+    cut_a = _side_passes(profile, params, "A", method, box.y_max + margin)
+    cut_b = _side_passes(profile, params, "B", method, box.y_min - margin)
     start_a, end_a = cut_a[0].start, cut_a[-1].end
     start_b, end_b = cut_b[0].start, cut_b[-1].end
 
-    margin = params.tilt_clearance_mm
     tilt_x = max(x0 + profile.length_mm + params.tool_radius_mm + margin, end_a[0], start_b[0])
     segments: list[Segment] = []
     segments += _travel(

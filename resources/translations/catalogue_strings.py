@@ -68,6 +68,10 @@ TEXTS = [
         "Parameters", "Lead-in before x = 0 and lead-out after x = L (longer than the tool radius)"
     ),
     QT_TRANSLATE_NOOP("Parameters", "Length of one shift"),
+    QT_TRANSLATE_NOOP(
+        "Parameters",
+        "Most material the router takes off one side in one pass (more: roughing passes first)",
+    ),
     QT_TRANSLATE_NOOP("Parameters", "Number of shifts per day"),
     QT_TRANSLATE_NOOP("Parameters", "P0: machine X of the stave's left end"),
     QT_TRANSLATE_NOOP("Parameters", "P0: machine Y of the table centre line"),

@@ -1011,6 +1011,11 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Most material the router takes off one side in one pass (more: roughing passes first)</source>
+        <translation>Most material the router takes off one side in one pass (more: roughing passes first)</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Number of shifts per day</source>
         <translation>Number of shifts per day</translation>
     </message>

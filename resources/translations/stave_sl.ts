@@ -1011,6 +1011,11 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Most material the router takes off one side in one pass (more: roughing passes first)</source>
+        <translation>Največ materiala, ki ga rezkar odvzame z ene strani v enem prehodu (več: najprej grobi prehodi)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Number of shifts per day</source>
         <translation>Število izmen na dan</translation>
     </message>

@@ -14,7 +14,13 @@ from app.geometry.bevel import FixedTilt, SideTilts
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits
 from app.geometry.outline import stave_drawing
 from app.geometry.profile import solve_profile
-from app.geometry.stave_cut import CutStage, StaveCutRefused, StaveSpec, cut_stave
+from app.geometry.stave_cut import (
+    CutStage,
+    StaveCutRefused,
+    StaveSpec,
+    cut_stave,
+    roughing_allowances_mm,
+)
 from app.geometry.toolpath import ToolPathParams, build_toolpath, keep_out_box
 from app.geometry.travel import check_toolpath_travel
 
@@ -147,3 +153,21 @@ def test_a_board_outside_the_target_range_is_refused(board: float, text: str) ->
     exc = refusal(replace(STAVE, target_width_mm=120.0), board)
     assert exc.stage is CutStage.STAVE and exc.fields == ("width_mm",)
     assert "120 <= width <= 280 mm" in str(exc) and text in str(exc)
+
+
+def test_more_than_the_depth_of_cut_is_cut_in_equal_passes_roughing_first() -> None:
+    target = replace(STAVE, target_width_mm=120.0)
+    params = {**PROCESS_DEFAULTS, "max_depth_of_cut_mm": 12.0}
+    cut = cut_stave(target, 150.0, params, DEFAULT_LIMITS)
+    assert cut.depth_per_side_mm == 30.0  # (150 - 0.75 * 120) / 2 at the heads
+    assert cut.passes == 3  # ceil(30 / 12)
+    assert cut.toolpath.params.roughing_allowances_mm == (20.0, 10.0)
+    one_pass = cut_stave(target, 150.0, {**params, "max_depth_of_cut_mm": 30.0}, DEFAULT_LIMITS)
+    assert one_pass.passes == 1 and one_pass.toolpath.params.roughing_allowances_mm == ()
+
+
+def test_roughing_allowances() -> None:
+    assert roughing_allowances_mm(30.0, None) == ()
+    assert roughing_allowances_mm(30.0, 30.0) == ()
+    assert roughing_allowances_mm(30.0, 29.999) == (15.0,)
+    assert roughing_allowances_mm(40.0, 10.0) == (30.0, 20.0, 10.0)

@@ -360,3 +360,36 @@ def test_side_b_bevel_is_validated_by_name():
     with pytest.raises(GeometryError) as caught:
         build_toolpath(EXAMPLE, replace(DEFAULT_PARAMS, tilt_b_deg=math.nan))
     assert caught.value.fields == ("tilt_b_deg",)
+
+
+def test_roughing_passes_come_first_each_side_ends_with_the_finishing_pass():
+    params = replace(DEFAULT_PARAMS, roughing_allowances_mm=(20.0, 10.0))
+    path = build_toolpath(EXAMPLE, params)
+    single = build_toolpath(EXAMPLE, DEFAULT_PARAMS)
+    assert params.passes == 3
+    for side in ("A", "B"):
+        cuts = path.side_segments(side)
+        finishing = single.side_segments(side)
+        assert cuts[-len(finishing) :] == finishing  # the last pass is the one-pass cut
+        assert len(cuts) == 3 * len(finishing)
+        # Each roughing pass is the same edge offset further out by its allowance.
+        for number, allowance in enumerate((20.0, 10.0)):
+            arc = cuts[number * len(finishing) + 2]
+            assert isinstance(arc, ArcSegment)
+            assert arc.radius_mm == pytest.approx(finishing[2].radius_mm + allowance, rel=1e-12)
+    # Between passes the cutter goes back round the board, outside the keep-out box.
+    box = keep_out_box(EXAMPLE, params).moved(params.start_x_mm, params.start_y_mm)
+    backs = [s for s in path.segments if not s.cutting and s.side in ("A", "B")]
+    assert len(backs) == 2 * 2 * 3  # up, across, down; twice on each side
+    for segment in backs:
+        assert not box.blocks(segment.start, segment.end)
+        assert segment.z_start_deg == segment.z_end_deg == (3.5 if segment.side == "A" else -3.5)
+    for before, after in zip(path.segments, path.segments[1:], strict=False):
+        assert before.end == after.start
+
+
+def test_roughing_allowances_are_validated():
+    for bad in ((10.0, 20.0), (0.0,), (math.nan,), [5.0]):
+        with pytest.raises(GeometryError) as caught:
+            build_toolpath(EXAMPLE, replace(DEFAULT_PARAMS, roughing_allowances_mm=bad))
+        assert caught.value.fields == ("roughing_allowances_mm",)

@@ -108,6 +108,8 @@ class _PhaseTracker:
                     raise PlannerError(f"side {segment.side} is cut twice in one tool path")
                 self.sides.append(segment.side)
             return _CUT_PHASES[segment.side]
+        if segment.side in _CUT_PHASES:  # back round the board between two passes of a side
+            return _CUT_PHASES[segment.side]
         if not self.sides:
             return Phase.APPROACH
         # A resumed cut may begin with side B: after B comes the return, whatever came before.
@@ -149,7 +151,8 @@ def _chunks(
                     f"{index - 1} ends (gap {gap:.3g} mm)"
                 )
         phase = tracker.phase(segment)
-        if run and _joins(run[-1], segment) and phase is run_phase:
+        same_kind = bool(run) and run[-1].cutting == segment.cutting  # feed or rapid
+        if run and same_kind and _joins(run[-1], segment) and phase is run_phase:
             run.append(segment)
             continue
         if run and (run[-1].length_mm > 0.0 or run[-1].z_start_deg != run[-1].z_end_deg):
