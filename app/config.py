@@ -21,6 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from app.plant.settings import OpcuaSettings, read_opcua_settings
 from app.resources import resource_path
 
 DEFAULT_CONFIG_NAME = "machine.toml"
@@ -197,6 +198,7 @@ class MachineConfig:
     language: str
     extra: dict[str, Any] = field(default_factory=dict)
     given_keys: frozenset[str] = frozenset()
+    opcua: OpcuaSettings = field(default_factory=OpcuaSettings)
 
     def with_backend(self, backend: str | None = None, gauge: str | None = None) -> MachineConfig:
         """The same configuration with the backends chosen on the command line."""
@@ -352,6 +354,8 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     language = ui.text("language", "en", ("en", "sl"))
     ui.finish()
 
+    opcua = read_opcua_settings(root.table("opcua"))
+
     root.finish()
     return MachineConfig(
         source,
@@ -367,6 +371,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
         log_dir,
         log_level,
         language,
+        opcua=opcua,
     )
 
 

@@ -130,10 +130,17 @@ def main(argv: Sequence[str] | None = None) -> int:
             )
             return 2
 
+    from app.machine.link import MachineLink
     from app.machine.process_link import ProcessMachineLink
     from app.screens.application import run_gui
 
-    link = ProcessMachineLink.start(config, db_path)
+    link: MachineLink = ProcessMachineLink.start(config, db_path)
+    if config.opcua.enabled:
+        from app.plant.process import PlantFeedLink, PlantProcess
+
+        for warning in config.opcua.insecure_choices():
+            log.warning("OPC UA: %s is on ([opcua] configuration): commissioning only", warning)
+        link = PlantFeedLink(link, PlantProcess.start(config.opcua, db_path, config.log_dir))
     try:
         with Database.open(db_path) as database:
             _quit_on_sigterm()

@@ -64,3 +64,21 @@ if [ ! -f "$stamp" ]; then
   rm -f .venv/.installed-"${extra:-app}"-*
   touch "$stamp"
 fi
+
+# The OPC UA information models (OPC Foundation NodeSet2 files) for the plant connection,
+# fetched at a pinned version into the venv (never into the repository).
+scripts/fetch-nodesets.sh .venv/share/opcua-nodesets
+
+# The test suite's OPC UA client, node-opcua (pinned in its package-lock.json).
+if [ "$extra" = "dev" ]; then
+  lock_stamp="tests/plant/node_client/node_modules/.installed-$(sha256sum tests/plant/node_client/package-lock.json | cut -c1-16)"
+  if [ ! -f "$lock_stamp" ]; then
+    if command -v npm >/dev/null 2>&1; then
+      (cd tests/plant/node_client && npm ci --silent --no-audit --no-fund >/dev/null 2>&1) \
+        && touch "$lock_stamp" \
+        || echo "stave: npm ci in tests/plant/node_client failed; the OPC UA client tests cannot run" >&2
+    else
+      echo "stave: npm is missing; the OPC UA client tests (node-opcua) cannot run" >&2
+    fi
+  fi
+fi

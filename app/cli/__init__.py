@@ -28,6 +28,7 @@ SUBCOMMANDS: dict[str, tuple[str, str]] = {
     "probe": ("app.cli.probe", "connect to the configured hardware and show its state"),
     "db": ("app.cli.db", "recipes import/export, production export, backup and restore"),
     "gcode": ("app.cli.gcode", "a stave's program for LinuxCNC or SINUMERIK, or its DXF drawing"),
+    "opcua": ("app.cli.opcua", "plant connection: OPC UA users, trusted clients, endpoints"),
 }
 
 

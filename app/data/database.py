@@ -688,32 +688,48 @@ class Database:
             errors = recipe.validate(self.limits)
             if errors:
                 raise RecipeValidationError(f"recipe {recipe.name!r}", errors)
-        saved: list[Recipe] = []
         with self._write() as conn:
             actor = self.check_role(user, RECIPE_EDIT_ROLE, "changing recipes")
-            now = self._now()
-            names = self._name_index(conn)
-            key_of_id = {recipe_id: key for key, recipe_id in names.items()}
-            for recipe in recipes:
-                clash = names.get(recipe.name.strip().casefold())
-                if clash is not None and clash != recipe.id:
-                    allowed = "a name no other recipe has"
-                    message = (
-                        f"name = {recipe.name!r} is already used by recipe {clash}: "
-                        f"allowed {allowed}"
-                    )
-                    error = FieldError("name", recipe.name, allowed, message)
-                    raise RecipeValidationError(f"recipe {recipe.name!r}", [error])
-                if recipe.id is None:
-                    stored = self._insert_recipe(conn, recipe, actor.name, now)
-                else:
-                    stored = self._update_recipe(conn, recipe, actor.name, now)
-                    names.pop(key_of_id.get(int(stored.id or 0), ""), None)
-                stored_id = int(stored.id or 0)
-                key = stored.name.strip().casefold()
-                names[key] = stored_id
-                key_of_id[stored_id] = key
-                saved.append(stored)
+            return self._store_recipes(conn, recipes, actor.name)
+
+    def save_plant_recipe(self, recipe: Recipe, plant_user: str) -> Recipe:
+        """Store a recipe downloaded over the plant connection (OPC UA role ``plant``); the
+        change log names the sender as ``opcua:<user>``. Validated like every other save."""
+        errors = recipe.validate(self.limits)
+        if errors:
+            raise RecipeValidationError(f"recipe {recipe.name!r}", errors)
+        existing = self.get_recipe_by_name(recipe.name)
+        to_store = replace(recipe, id=None if existing is None else existing.id)
+        with self._write() as conn:
+            return self._store_recipes(conn, [to_store], f"opcua:{plant_user}")[0]
+
+    def _store_recipes(
+        self, conn: sqlite3.Connection, recipes: Sequence[Recipe], actor_name: str
+    ) -> list[Recipe]:
+        saved: list[Recipe] = []
+        now = self._now()
+        names = self._name_index(conn)
+        key_of_id = {recipe_id: key for key, recipe_id in names.items()}
+        for recipe in recipes:
+            clash = names.get(recipe.name.strip().casefold())
+            if clash is not None and clash != recipe.id:
+                allowed = "a name no other recipe has"
+                message = (
+                    f"name = {recipe.name!r} is already used by recipe {clash}: "
+                    f"allowed {allowed}"
+                )
+                error = FieldError("name", recipe.name, allowed, message)
+                raise RecipeValidationError(f"recipe {recipe.name!r}", [error])
+            if recipe.id is None:
+                stored = self._insert_recipe(conn, recipe, actor_name, now)
+            else:
+                stored = self._update_recipe(conn, recipe, actor_name, now)
+                names.pop(key_of_id.get(int(stored.id or 0), ""), None)
+            stored_id = int(stored.id or 0)
+            key = stored.name.strip().casefold()
+            names[key] = stored_id
+            key_of_id[stored_id] = key
+            saved.append(stored)
         return saved
 
     def _insert_recipe(

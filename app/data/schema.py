@@ -199,6 +199,22 @@ MIGRATIONS: tuple[Migration, ...] = (
             """,
         ),
     ),
+    Migration(
+        7,
+        "OPC UA users of the plant connection (user name, role, salted scrypt password hash)",
+        (
+            """
+            CREATE TABLE opcua_users (
+                id INTEGER PRIMARY KEY,
+                name TEXT NOT NULL COLLATE NOCASE UNIQUE
+                    CHECK (length(name) BETWEEN 1 AND 40 AND name = trim(name)),
+                role TEXT NOT NULL CHECK (role IN ('read-only', 'plant')),
+                password_hash TEXT NOT NULL CHECK (password_hash LIKE 'scrypt$%'),
+                updated_at TEXT NOT NULL
+            ) STRICT
+            """,
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

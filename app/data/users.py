@@ -80,18 +80,17 @@ def check_pin_format(pin: str) -> None:
         )
 
 
-def hash_pin(pin: str) -> str:
-    """Return ``scrypt$N$r$p$salt_hex$hash_hex`` for a PIN (format-checked first)."""
-    check_pin_format(pin)
+def hash_secret(secret: str) -> str:
+    """Return ``scrypt$N$r$p$salt_hex$hash_hex`` for a PIN or a password (UTF-8)."""
     salt = secrets.token_bytes(_SALT_BYTES)
     digest = hashlib.scrypt(
-        pin.encode("ascii"), salt=salt, n=_SCRYPT_N, r=_SCRYPT_R, p=_SCRYPT_P, dklen=_DKLEN
+        secret.encode("utf-8"), salt=salt, n=_SCRYPT_N, r=_SCRYPT_R, p=_SCRYPT_P, dklen=_DKLEN
     )
     return f"scrypt${_SCRYPT_N}${_SCRYPT_R}${_SCRYPT_P}${salt.hex()}${digest.hex()}"
 
 
-def verify_pin(pin: str, stored: str) -> bool:
-    """True if ``pin`` matches a hash made by :func:`hash_pin` (constant-time compare)."""
+def verify_secret(secret: str, stored: str) -> bool:
+    """True if ``secret`` matches a hash made by :func:`hash_secret` (constant-time compare)."""
     try:
         scheme, n_text, r_text, p_text, salt_hex, digest_hex = stored.split("$")
         if scheme != "scrypt":
@@ -101,7 +100,20 @@ def verify_pin(pin: str, stored: str) -> bool:
         n, r, p = int(n_text), int(r_text), int(p_text)
     except ValueError:
         return False
+    if not isinstance(secret, str):
+        return False
+    digest = hashlib.scrypt(secret.encode("utf-8"), salt=salt, n=n, r=r, p=p, dklen=len(expected))
+    return hmac.compare_digest(digest, expected)
+
+
+def hash_pin(pin: str) -> str:
+    """Return ``scrypt$N$r$p$salt_hex$hash_hex`` for a PIN (format-checked first)."""
+    check_pin_format(pin)
+    return hash_secret(pin)
+
+
+def verify_pin(pin: str, stored: str) -> bool:
+    """True if ``pin`` matches a hash made by :func:`hash_pin` (constant-time compare)."""
     if not isinstance(pin, str) or not pin.isascii():
         return False
-    digest = hashlib.scrypt(pin.encode("ascii"), salt=salt, n=n, r=r, p=p, dklen=len(expected))
-    return hmac.compare_digest(digest, expected)
+    return verify_secret(pin, stored)

@@ -1,0 +1,400 @@
+"""The OPC UA server: the woodworking model, fed by snapshots, with the two job methods.
+
+Why values are written only when they change: a snapshot arrives 50 times a second and most
+of it stays the same; writing only the changes keeps the server's work (and the clients'
+notifications) proportional to what happens on the machine.
+"""
+
+from __future__ import annotations
+
+import logging
+import socket
+import tempfile
+from collections.abc import Callable
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from asyncua import Server, ua
+from asyncua.common.utils import ServiceError
+from asyncua.crypto.cert_gen import setup_self_signed_certificate
+from cryptography import x509
+from cryptography.hazmat.primitives.serialization import Encoding
+from cryptography.x509.oid import ExtendedKeyUsageOID
+
+from app.data.database import Database
+from app.data.exchange import production_to_csv, read_recipes
+from app.data.production_counts import run_counts
+from app.data.recipe_files import RecipeFileError
+from app.data.shifts import ShiftPlan, current_shift
+from app.machine.commands import SelectRecipe
+from app.machine.snapshot import AlarmState, MachineSnapshot
+from app.plant.access import CALLER, PlantRuleset, PlantUserManager, monotonic_clock
+from app.plant.alarm_events import AlarmChange, alarm_changes
+from app.plant.alarm_texts import alarm_titles
+from app.plant.jobs import PlantJob, PlantJobs
+from app.plant.login_throttle import LoginThrottle
+from app.plant.model import WW_BASE_EVENT_TYPE_ID, MachineNodes, build_machine, load_models
+from app.plant.settings import OpcuaSettings
+from app.plant.state_map import WwUnitState, unit_flags, unit_mode, unit_state
+from app.plant.trust import TrustList
+
+log = logging.getLogger(__name__)
+
+APPLICATION_URI = "urn:stave-jointer:opcua:server"
+_EVENT_CATEGORY = {"fault": 4, "warning": 3}  # WwEventCategoryEnumeration ALARM, WARNING
+_SEVERITY = {"fault": 800, "warning": 400}
+_TIME_VALUES = {
+    WwUnitState.STANDBY: "RelativeStandbyTime",
+    WwUnitState.READY: "RelativeReadyTime",
+    WwUnitState.WORKING: "RelativeWorkingTime",
+    WwUnitState.ERROR: "RelativeErrorTime",
+}
+_COUNTER_TYPES = {"AbsolutePiecesOut", "RelativePiecesOut", "PiecesThisShift"}
+
+
+def security_policies(settings: OpcuaSettings) -> list[ua.SecurityPolicyType]:
+    policies = [
+        ua.SecurityPolicyType.Basic256Sha256_SignAndEncrypt,
+        ua.SecurityPolicyType.Aes128Sha256RsaOaep_SignAndEncrypt,
+    ]
+    if settings.allow_security_none:
+        policies.append(ua.SecurityPolicyType.NoSecurity)
+    return policies
+
+
+class PlantServer:
+    def __init__(
+        self,
+        settings: OpcuaSettings,
+        db_path: Path,
+        pki_dir: Path,
+        send: Callable[[SelectRecipe], None],
+        nodesets_dir: Path | None = None,
+        clock: Callable[[], float] = monotonic_clock,
+        on_event: Callable[[str], None] = lambda _text: None,
+    ) -> None:
+        self.settings = settings
+        self.db_path = db_path
+        self.trust = TrustList(pki_dir)
+        self._send = send
+        self._nodesets_dir = nodesets_dir
+        self._clock = clock
+        self._on_event = on_event
+        self.jobs = PlantJobs()
+        self.server = Server(
+            user_manager=PlantUserManager(
+                db_path,
+                LoginThrottle(settings.max_failed_logins, settings.lockout_s, clock),
+                settings.allow_anonymous,
+                on_event,
+            )
+        )
+        self.nodes: MachineNodes | None = None
+        self._written: dict[str, Any] = {}
+        self._last: MachineSnapshot | None = None
+        self._last_time = clock()
+        self._started = clock()
+        self._state_ms: dict[str, float] = {}
+        self._counted_total = -1
+        self._start_counts: dict[str, int] | None = None
+        self._events: Any = None
+
+    # ------------------------------------------------------------------ start and stop
+
+    async def start(self) -> None:
+        for warning in self.settings.insecure_choices():
+            log.warning(
+                "OPC UA: %s is on ([opcua] configuration); use it for commissioning only", warning
+            )
+        await self.server.init()
+        await self.server.set_application_uri(APPLICATION_URI)
+        self.server.set_server_name("Stave jointer")
+        self.server.set_endpoint(self.settings.endpoint_url)
+        self.server.set_security_policy(
+            security_policies(self.settings), permission_ruleset=PlantRuleset()
+        )
+        tokens: list[type] = [ua.UserNameIdentityToken]
+        if self.settings.allow_anonymous:
+            tokens.append(ua.AnonymousIdentityToken)
+        self.server.set_identity_tokens(tokens)
+        self.trust.create_folders()
+        await setup_self_signed_certificate(
+            self.trust.key_file,
+            self.trust.certificate_file,
+            APPLICATION_URI,
+            socket.gethostname(),
+            [ExtendedKeyUsageOID.SERVER_AUTH, ExtendedKeyUsageOID.CLIENT_AUTH],
+            {
+                "commonName": "stave-jointer OPC UA server",
+                "organizationName": self.settings.manufacturer,
+            },
+        )
+        self.trust.key_file.chmod(0o600)
+        await self.server.load_certificate(str(self.trust.certificate_file))
+        await self.server.load_private_key(str(self.trust.key_file))
+        self.server.set_certificate_validator(self._validate_client)
+        await load_models(self.server, self._nodesets_dir)
+        self.nodes = await build_machine(self.server, self.settings)
+        await self._add_methods(self.nodes)
+        self._events = await self.server.get_event_generator(
+            ua.NodeId(WW_BASE_EVENT_TYPE_ID, self.nodes.ww), self.nodes.events.nodeid
+        )
+        await self.publish(None)
+        await self.server.start()
+        log.info("OPC UA server listening on %s", self.settings.endpoint_url)
+
+    async def stop(self) -> None:
+        await self.server.stop()
+
+    async def _validate_client(
+        self, cert: x509.Certificate, _app: ua.ApplicationDescription
+    ) -> None:
+        der = cert.public_bytes(Encoding.DER)
+        if not self.trust.check_time(der):
+            raise ServiceError(ua.StatusCodes.BadCertificateTimeInvalid)
+        if not self.trust.is_trusted(der):
+            print_ = self.trust.note_rejected(der)
+            log.warning("OPC UA client certificate %s refused: not in the trust list", print_)
+            self._on_event(f"client certificate {print_} refused: not trusted")
+            raise ServiceError(ua.StatusCodes.BadCertificateUntrusted)
+
+    # ------------------------------------------------------------------ jobs
+
+    async def _add_methods(self, nodes: MachineNodes) -> None:
+        def arg(name: str, type_id: int, text: str) -> ua.Argument:
+            argument = ua.Argument()
+            argument.Name = name
+            argument.DataType = ua.NodeId(type_id)
+            argument.ValueRank = -1
+            argument.Description = ua.LocalizedText(text)
+            return argument
+
+        outputs = [
+            arg("Accepted", ua.ObjectIds.Boolean, "true if the job was accepted"),
+            arg("Message", ua.ObjectIds.String, "what happens, or why not (field, value, allowed)"),
+        ]
+        await nodes.specific.add_method(
+            ua.NodeId("StaveJointer.SelectRecipe", nodes.own_ns),
+            ua.QualifiedName("SelectRecipe", nodes.own_ns),
+            self._select_recipe,
+            [arg("RecipeName", ua.ObjectIds.String, "the name of a stored recipe")],
+            outputs,
+        )
+        await nodes.specific.add_method(
+            ua.NodeId("StaveJointer.DownloadRecipe", nodes.own_ns),
+            ua.QualifiedName("DownloadRecipe", nodes.own_ns),
+            self._download_recipe,
+            [
+                arg(
+                    "RecipeJson",
+                    ua.ObjectIds.String,
+                    "one recipe as recipe export writes it (JSON)",
+                )
+            ],
+            outputs,
+        )
+
+    @staticmethod
+    def _answer(accepted: bool, message: str) -> list[ua.Variant]:
+        return [
+            ua.Variant(accepted, ua.VariantType.Boolean),
+            ua.Variant(message, ua.VariantType.String),
+        ]
+
+    async def _select_recipe(self, _parent: ua.NodeId, name: Any) -> list[ua.Variant]:
+        text = name.Value if isinstance(name, ua.Variant) else name
+        if not isinstance(text, str):
+            return self._answer(False, "RecipeName is not allowed: a string")
+        with Database.open(self.db_path, load_samples=False) as db:
+            recipe = db.get_recipe_by_name(text)
+        if recipe is None or recipe.id is None:
+            return self._answer(
+                False, f"RecipeName = {text!r} is not allowed: the name of a stored recipe"
+            )
+        return await self._queue_job(PlantJob(recipe.id, recipe.name, CALLER.get() or "?"))
+
+    async def _download_recipe(self, _parent: ua.NodeId, document: Any) -> list[ua.Variant]:
+        text = document.Value if isinstance(document, ua.Variant) else document
+        if not isinstance(text, str) or len(text) > 65536:
+            return self._answer(False, "RecipeJson is not allowed: a JSON text of at most 64 KiB")
+        user = CALLER.get() or "?"
+        with Database.open(self.db_path, load_samples=False) as db:
+            with tempfile.TemporaryDirectory(prefix="stave-opcua-") as tmp:
+                path = Path(tmp) / "download.json"
+                path.write_text(text, encoding="utf-8")
+                try:
+                    valid, rejected = read_recipes(path, db.limits)
+                except RecipeFileError as exc:
+                    return self._answer(False, str(exc).replace(str(path), "RecipeJson"))
+            if rejected:
+                return self._answer(False, "; ".join(rejected[0].lines()))
+            if len(valid) != 1:
+                return self._answer(
+                    False, f"RecipeJson holds {len(valid)} recipes: allowed exactly one"
+                )
+            stored = db.save_plant_recipe(valid[0][1], user)
+        log.info("OPC UA: recipe %r downloaded by %s", stored.name, user)
+        assert stored.id is not None
+        return await self._queue_job(PlantJob(stored.id, stored.name, user))
+
+    async def _queue_job(self, job: PlantJob) -> list[ua.Variant]:
+        self.jobs.request(job)
+        log.info("OPC UA: %s", job.notice(done=False))
+        self._on_event(job.notice(done=False))
+        await self._apply_jobs(self._last)
+        return self._answer(True, self.jobs.notice())
+
+    async def _apply_jobs(self, snapshot: MachineSnapshot | None) -> None:
+        command = self.jobs.due(snapshot)
+        if command is not None:
+            self._send(command)
+        await self._write_own("PlantJob", self.jobs.notice(), ua.VariantType.String)
+
+    # ------------------------------------------------------------------ publishing
+
+    async def _write(self, key: str, node: Any, value: Any, vtype: ua.VariantType) -> None:
+        if self._written.get(key, object()) == value:
+            return
+        self._written[key] = value
+        await node.write_value(ua.DataValue(ua.Variant(value, vtype)))
+
+    async def _write_own(self, name: str, value: Any, vtype: ua.VariantType) -> None:
+        assert self.nodes is not None
+        await self._write(f"own.{name}", self.nodes.own[name], value, vtype)
+
+    async def publish(self, snapshot: MachineSnapshot | None) -> None:
+        """Bring the address space up to ``snapshot`` (None: the machine process is gone)."""
+        nodes = self.nodes
+        if nodes is None:
+            return
+        now = self._clock()
+        flags = unit_flags(snapshot)
+        state = unit_state(flags)
+        previous_state = unit_state(unit_flags(self._last))
+        elapsed_ms = (now - self._last_time) * 1000.0
+        self._last_time = now
+        bucket = _TIME_VALUES.get(previous_state)
+        if bucket is not None:
+            self._state_ms[bucket] = self._state_ms.get(bucket, 0.0) + elapsed_ms
+        if previous_state is not WwUnitState.OFFLINE:
+            self._state_ms["RelativeMachineOnTime"] = (
+                self._state_ms.get("RelativeMachineOnTime", 0.0) + elapsed_ms
+            )
+        for name, value in flags.as_browse_names().items():
+            if name in nodes.flags:
+                await self._write(f"flag.{name}", nodes.flags[name], value, ua.VariantType.Boolean)
+        await self._write("state", nodes.current_state, int(state), ua.VariantType.Int32)
+        await self._write(
+            "mode", nodes.current_mode, int(unit_mode(snapshot)), ua.VariantType.Int32
+        )
+        for name in _TIME_VALUES.values():
+            await self._write(
+                name, nodes.values[name], int(self._state_ms.get(name, 0.0)), ua.VariantType.UInt64
+            )
+        await self._write(
+            "RelativeMachineOnTime",
+            nodes.values["RelativeMachineOnTime"],
+            int(self._state_ms.get("RelativeMachineOnTime", 0.0)),
+            ua.VariantType.UInt64,
+        )
+        if snapshot is not None:
+            await self._publish_machine(snapshot)
+            for change in alarm_changes(self._last.alarms if self._last else (), snapshot.alarms):
+                await self._fire(change)
+        await self._apply_jobs(snapshot)
+        self._last = snapshot
+
+    async def _publish_machine(self, snapshot: MachineSnapshot) -> None:
+        nodes = self.nodes
+        assert nodes is not None
+        v = nodes.values
+        await self._write(
+            "AxisOverride",
+            v["AxisOverride"],
+            round(snapshot.feed_override_pct),
+            ua.VariantType.UInt32,
+        )
+        cycle_s = snapshot.last_cycle_time_s
+        per_min = 60.0 / cycle_s if cycle_s else 0.0
+        await self._write("ActualCycle", v["ActualCycle"], per_min, ua.VariantType.Double)
+        await self._write_own("SelectedRecipe", snapshot.recipe_name, ua.VariantType.String)
+        await self._write_own("StateText", snapshot.state_text, ua.VariantType.String)
+        await self._write_own("LastWidth_mm", snapshot.last_width_mm or 0.0, ua.VariantType.Double)
+        await self._write_own("LastCycleTime_s", cycle_s or 0.0, ua.VariantType.Double)
+        if snapshot.cycle.d_mm is not None:
+            await self._write_own("LastD_mm", snapshot.cycle.d_mm, ua.VariantType.Double)
+        if snapshot.cycle.r_mm is not None:
+            await self._write_own("LastR_mm", snapshot.cycle.r_mm, ua.VariantType.Double)
+        await self._write_own("PiecesThisShift", snapshot.pieces_shift, ua.VariantType.UInt64)
+        if snapshot.pieces_total != self._counted_total:
+            self._counted_total = snapshot.pieces_total
+            await self._publish_counts()
+
+    async def _publish_counts(self) -> None:
+        """Counters from the database, the one record of every board (read when the
+        machine's own count changes, so a client's counters match the records)."""
+        nodes = self.nodes
+        assert nodes is not None
+        with Database.open(self.db_path, load_samples=False) as db:
+            counts = run_counts(db)
+            plan = ShiftPlan.from_parameters(db.get_parameters())
+            feed_mm_s = db.get_parameter("xy_speed_mm_s")
+            now = datetime.now(UTC)
+            _, shift_start = current_shift(now, plan)
+            shift_records = db.list_production(shift_start, now)
+        if self._start_counts is None:
+            self._start_counts = counts
+        good, total = counts["ok"], sum(counts.values())
+        aborted = total - good
+        start = self._start_counts
+        start_good, start_total = start["ok"], sum(start.values())
+        v = nodes.values
+        u64 = ua.VariantType.UInt64
+        await self._write("AbsolutePiecesOut", v["AbsolutePiecesOut"], good, u64)
+        await self._write("AbsoluteRunsGood", v["AbsoluteRunsGood"], good, u64)
+        await self._write("AbsoluteRunsAborted", v["AbsoluteRunsAborted"], aborted, u64)
+        await self._write("AbsoluteRunsTotal", v["AbsoluteRunsTotal"], total, u64)
+        await self._write("RelativePiecesOut", v["RelativePiecesOut"], good - start_good, u64)
+        await self._write("RelativeRunsGood", v["RelativeRunsGood"], good - start_good, u64)
+        await self._write(
+            "RelativeRunsAborted",
+            v["RelativeRunsAborted"],
+            aborted - (start_total - start_good),
+            u64,
+        )
+        await self._write("RelativeRunsTotal", v["RelativeRunsTotal"], total - start_total, u64)
+        await self._write("FeedSpeed", v["FeedSpeed"], feed_mm_s * 0.06, ua.VariantType.Double)
+        await self._write_own(
+            "ShiftProductionCsv", production_to_csv(shift_records), ua.VariantType.String
+        )
+
+    async def _fire(self, change: AlarmChange) -> None:
+        """One woodworking event per ISA-18.2 transition."""
+        alarm = change.alarm
+        titles = alarm_titles(alarm.code)
+        event = self._events.event
+        event.MessageId = alarm.code
+        event.MessageName = alarm.code
+        event.EventCategory = _EVENT_CATEGORY.get(alarm.severity, 0)
+        event.Group = alarm.source or "machine"
+        event.PathParts = ["StaveJointer", alarm.source] if alarm.source else ["StaveJointer"]
+        event.LocalizedMessages = [
+            ua.LocalizedText(text, locale) for locale, text in titles.items()
+        ]
+        event.Severity = _SEVERITY.get(alarm.severity, 100)
+        event.SourceName = "StaveJointer"
+        event.SourceNode = self.nodes.machine.nodeid if self.nodes else ua.NodeId()
+        state_text = change.to_state.value if change.to_state is not AlarmState.NORMAL else "normal"
+        event.Message = ua.LocalizedText(f"{alarm.code} {alarm.text} [{state_text}]", "en")
+        await self._events.trigger(time_attr=datetime.now(UTC))
+
+
+def describe_endpoints(settings: OpcuaSettings) -> list[str]:
+    """What ``stave opcua endpoints`` prints: one line per endpoint the server offers."""
+    lines = []
+    for policy in security_policies(settings):
+        name = policy.name
+        tokens = "UserName" + (", Anonymous" if settings.allow_anonymous else "")
+        lines.append(f"{settings.endpoint_url}  {name}  users: {tokens}")
+    return lines
