@@ -126,6 +126,11 @@ unpinned="$("${pip[@]}" freeze --exclude stave-jointer | normalize | comm -23 - 
 [ -z "$unpinned" ] || die "installed but not pinned in $lock: $unpinned" \
   "(rewrite it: packaging/build-deb.sh --update-lock)"
 
+step "OPC UA information models (OPC Foundation NodeSet2 files)"
+# Fetched pinned with npm, into the venv's share/ where the server looks (sys.prefix).
+"$repo/scripts/fetch-nodesets.sh" "$venv/share/opcua-nodesets" ||
+  die "could not fetch the OPC UA NodeSet2 files (npm and internet access are needed to build)"
+
 # pip and setuptools are for building; on the panel the package is the unit of change.
 "${pip[@]}" uninstall -y pip setuptools
 rm -f "$venv"/lib/python*/site-packages/stave_jointer-*.dist-info/direct_url.json

@@ -206,6 +206,7 @@ class PlantFeedLink:
         self._plant = plant
         self._fed_seq = -1
         self._notice = ""
+        self._covered_message = ""
 
     def send(self, command: Command) -> None:
         self._link.send(command)
@@ -218,9 +219,13 @@ class PlantFeedLink:
         for command in self._plant.commands():
             if isinstance(command, SelectRecipe):  # the only command the plant may cause
                 self._link.send(command)
+        if snapshot is None:
+            return None
         if self._plant.notices and self._plant.notices[-1] != self._notice:
+            # A new notice from the plant shows until the machine has something newer to say.
             self._notice = self._plant.notices[-1]
-        if snapshot is not None and self._notice and not snapshot.message:
+            self._covered_message = snapshot.message
+        if self._notice and snapshot.message == self._covered_message:
             return replace(snapshot, message=self._notice)
         return snapshot
 

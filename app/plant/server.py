@@ -50,7 +50,14 @@ _TIME_VALUES = {
     WwUnitState.WORKING: "RelativeWorkingTime",
     WwUnitState.ERROR: "RelativeErrorTime",
 }
-_COUNTER_TYPES = {"AbsolutePiecesOut", "RelativePiecesOut", "PiecesThisShift"}
+_EVENT_FIELD_TYPES = {
+    "MessageId": ua.VariantType.String,
+    "MessageName": ua.VariantType.String,
+    "Group": ua.VariantType.String,
+    "PathParts": ua.VariantType.String,
+    "EventCategory": ua.VariantType.Int32,
+    "LocalizedMessages": ua.VariantType.LocalizedText,
+}
 
 
 def security_policies(settings: OpcuaSettings) -> list[ua.SecurityPolicyType]:
@@ -140,6 +147,9 @@ class PlantServer:
         self._events = await self.server.get_event_generator(
             ua.NodeId(WW_BASE_EVENT_TYPE_ID, self.nodes.ww), self.nodes.events.nodeid
         )
+        # asyncua takes a property's variant type from its (empty) default value: name them.
+        for name, vtype in _EVENT_FIELD_TYPES.items():
+            self._events.event.data_types[name] = vtype
         await self.publish(None)
         await self.server.start()
         log.info("OPC UA server listening on %s", self.settings.endpoint_url)
@@ -249,6 +259,7 @@ class PlantServer:
         command = self.jobs.due(snapshot)
         if command is not None:
             self._send(command)
+            self._on_event(self.jobs.notice())
         await self._write_own("PlantJob", self.jobs.notice(), ua.VariantType.String)
 
     # ------------------------------------------------------------------ publishing

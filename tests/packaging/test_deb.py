@@ -318,6 +318,27 @@ def test_stave_version_from_the_unpacked_root(built: Built, tmp_path: Path):
     assert done.stdout.strip() == f"stave {app.__version__}"
 
 
+def test_opcua_models_are_bundled_where_the_server_finds_them(built: Built, tmp_path: Path):
+    python = built.root / PREFIX / "venv/bin/python"
+    done = subprocess.run(
+        [
+            str(python),
+            "-c",
+            "from app.plant.nodesets import nodeset_files; print(len(nodeset_files()))",
+        ],
+        capture_output=True,
+        text=True,
+        env=_env(built, tmp_path / "home"),
+        cwd=tmp_path,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "6"
+    assert (
+        built.root / PREFIX / "venv/share/opcua-nodesets/Opc.Ua.Woodworking.NodeSet2.xml"
+    ).is_file()
+
+
 def test_stave_solve_through_the_wrapper(built: Built, tmp_path: Path):
     wrapper = _relocated(built, "usr/bin/stave", tmp_path / "stave")
     env = _env(built, tmp_path / "home")

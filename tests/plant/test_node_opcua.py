@@ -25,6 +25,7 @@ from app.data.recipe_files import recipes_to_json
 from app.machine import commands as cmd
 from app.machine.local_link import LocalMachineLink
 from app.machine.states import MachineState
+from app.plant.alarm_texts import alarm_titles
 from app.plant.process import PlantFeedLink, PlantProcess
 from app.plant.settings import OpcuaSettings
 from app.plant.state_map import unit_flags, unit_state
@@ -228,9 +229,15 @@ def test_subscribed_state_counters_and_alarm_events_while_staves_are_cut(plant: 
         assert wait_until(lambda: last("pieces") == counts["ok"], 10.0), (last("pieces"), counts)
         assert last("runs") == sum(counts.values())
         events = [n for n in node.notifications if n.get("event")]
-        drive = [e for e in events if "E010 Drive fault" in (e.get("message") or "")]
+        drive = [e for e in events if e.get("messageId") == "E010"]
         assert drive, events[:3]
-        assert any("[active, unacknowledged]" in e["message"] for e in drive)
+        first = drive[0]
+        locales = {item["locale"]: item["text"] for item in first["localized"]}
+        assert locales == {"en": "Drive fault", "sl": alarm_titles("E010")["sl"]}
+        assert locales["sl"] != "Drive fault"
+        assert first["severity"] == 800 and first["category"] == 4  # ALARM
+        assert first["message"].startswith("E010 Drive fault")
+        assert first["message"].endswith("[active, unacknowledged]")  # ISA-18.2 state
     finally:
         node.close()
         plant.feed.send(cmd.ClearFaults())
