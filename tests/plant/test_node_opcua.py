@@ -294,23 +294,18 @@ def test_job_methods_select_and_download_only_when_ready(plant: Plant) -> None:
         node.close()
 
 
+def connects(plant: Plant, **login: str) -> bool:
+    node = plant.client()
+    try:
+        return bool(node.ask("connect", **login)["ok"])
+    finally:
+        node.close()
+
+
 def test_refusals_anonymous_wrong_password_none_read_only_and_writes(plant: Plant) -> None:
-    anonymous = plant.client()
-    try:
-        assert anonymous.ask("connect")["ok"] is False
-    finally:
-        anonymous.close()
-    wrong = plant.client()
-    try:
-        assert wrong.ask("connect", user="mes", password="not-the-password")["ok"] is False
-    finally:
-        wrong.close()
-    none = plant.client()
-    try:
-        reply = none.ask("connect", user="mes", password=PASSWORD, mode="None", policy="None")
-        assert reply["ok"] is False
-    finally:
-        none.close()
+    assert not connects(plant)  # anonymous
+    assert not connects(plant, user="mes", password="not-the-password")
+    assert not connects(plant, user="mes", password=PASSWORD, mode="None", policy="None")
     viewer = plant.client()
     try:
         assert viewer.ask("connect", user="viewer", password=PASSWORD)["ok"]
@@ -332,13 +327,5 @@ def test_refusals_anonymous_wrong_password_none_read_only_and_writes(plant: Plan
 
 def test_failed_logins_lock_the_user_name(plant: Plant) -> None:
     for _ in range(plant.config.opcua.max_failed_logins):
-        node = plant.client()
-        try:
-            assert node.ask("connect", user="guesser", password="wrong-guess")["ok"] is False
-        finally:
-            node.close()
-    node = plant.client()
-    try:
-        assert node.ask("connect", user="guesser", password=PASSWORD)["ok"] is False
-    finally:
-        node.close()
+        assert not connects(plant, user="guesser", password="wrong-guess")
+    assert not connects(plant, user="guesser", password=PASSWORD)  # locked, right or not
