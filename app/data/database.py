@@ -715,8 +715,7 @@ class Database:
             if clash is not None and clash != recipe.id:
                 allowed = "a name no other recipe has"
                 message = (
-                    f"name = {recipe.name!r} is already used by recipe {clash}: "
-                    f"allowed {allowed}"
+                    f"name = {recipe.name!r} is already used by recipe {clash}: allowed {allowed}"
                 )
                 error = FieldError("name", recipe.name, allowed, message)
                 raise RecipeValidationError(f"recipe {recipe.name!r}", [error])
