@@ -32,12 +32,21 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.data.dxf_profile import DxfProfileError, read_dxf_profile
 from app.data.errors import DataError, FieldValidationError
 from app.data.exchange import export_recipes, import_recipes
 from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, Recipe, TiltMode
+from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
 from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
+from app.geometry.profile_kinds import (
+    EXPONENT,
+    SEMI_AXIS_RATIO,
+    FamilyParameter,
+    ProfileKind,
+    default_parameters,
+)
 from app.geometry.ratio import Ratio
 from app.machine.commands import SelectRecipe
 from app.machine.program_export import ExportFormat, export_file_name, export_text
@@ -69,12 +78,53 @@ FIELDS = (
     "thickness_mm",
     "length_ratio",
     "width_ratio",
+    "profile_kind",
+    "exponent",
+    "semi_axis_ratio",
+    "drawing",
     "tilt_mode",
     "tilt_deg",
     "barrel_diameter_mm",
     "barrel_perimeter_mm",
     "note",
 )
+PROFILE_FIELDS = ("profile_kind", "exponent", "semi_axis_ratio", "drawing")
+"""The side profile's rows: the kind, a family's parameters, a drawing's file."""
+FAMILY_FIELDS: dict[str, FamilyParameter] = {
+    EXPONENT.name: EXPONENT,
+    SEMI_AXIS_RATIO.name: SEMI_AXIS_RATIO,
+}
+# Validation names a drawing's problems on these fields; the screen shows them on its row.
+ERROR_FIELD_ROWS = {"profile": "drawing", "drawn_profile": "drawing"}
+
+
+def field_value(recipe: Recipe, name: str) -> object:
+    """A row's value: a recipe attribute, or a part of its side profile."""
+    profile = recipe.profile
+    if name == "profile_kind":
+        return profile.kind
+    if name in FAMILY_FIELDS:
+        return dict(profile.params).get(name)
+    if name == "drawing":
+        return (profile.file_name, profile.file_sha256)
+    return getattr(recipe, name)
+
+
+def with_profile_kind(profile: RecipeProfile, kind: ProfileKind) -> RecipeProfile:
+    """The profile switched to ``kind``: a family starts from its defaults (keeping values
+    the two families share), a drawing is kept only while the kind stays drawn."""
+    if kind is profile.kind:
+        return profile
+    if kind.is_family:
+        known = dict(profile.params)
+        params = {name: known.get(name, value) for name, value in default_parameters(kind).items()}
+        return RecipeProfile(kind, tuple(sorted(params.items())))
+    return RecipeProfile(kind)
+
+
+def with_family_value(profile: RecipeProfile, name: str, value: float) -> RecipeProfile:
+    params = {**dict(profile.params), name: value}
+    return replace(profile, params=tuple(sorted(params.items())))
 
 
 def new_recipe_template(name: str) -> Recipe:
@@ -94,10 +144,10 @@ def new_recipe_template(name: str) -> Recipe:
 
 
 def field_errors(recipe: Recipe, limits: StaveLimits) -> dict[str, list[FieldError]]:
-    """The recipe's validation errors grouped by field."""
+    """The recipe's validation errors grouped by the row that shows them."""
     grouped: dict[str, list[FieldError]] = {}
     for error in recipe.validate(limits):
-        grouped.setdefault(error.field, []).append(error)
+        grouped.setdefault(ERROR_FIELD_ROWS.get(error.field, error.field), []).append(error)
     return grouped
 
 
@@ -161,6 +211,7 @@ class RecipesScreen(Screen):
         self.range_labels: dict[str, QLabel] = {}
         self.field_buttons: dict[str, QPushButton] = {}
         self.error_labels: dict[str, QLabel] = {}
+        self.row_widgets: dict[str, list[QWidget]] = {}
         for name in FIELDS:
             # One row per field: name and allowed range on the left, the value (a button
             # that opens the keypad) on the right, the error (if any) across below.
@@ -192,7 +243,7 @@ class RecipesScreen(Screen):
                 row.addLayout(mode_row, 0, 1, 2, 1)
             else:
                 button = touch_button(f"field_{name}", "field")
-                if name in ("name", "note"):
+                if name in ("name", "note", "drawing"):
                     button.setProperty("align", "left")  # show where a long text begins
                 button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
                 # Long names and notes must not widen the form: the text is cut instead.
@@ -205,6 +256,9 @@ class RecipesScreen(Screen):
             error.setVisible(False)
             row.addWidget(error, 2, 0, 1, 2)
             rows.addLayout(row)
+            self.row_widgets[name] = [label, caption, error]
+            if name in self.field_buttons:
+                self.row_widgets[name].append(self.field_buttons[name])
             self.field_labels[name] = label
             self.range_labels[name] = caption
             self.error_labels[name] = error
@@ -293,6 +347,10 @@ class RecipesScreen(Screen):
             "thickness_mm": self.tr("Thickness H"),
             "length_ratio": self.tr("Length ratio L1 : L"),
             "width_ratio": self.tr("Width ratio W1 : W"),
+            "profile_kind": self.tr("Side profile"),
+            "exponent": self.tr("Exponent n"),
+            "semi_axis_ratio": self.tr("Semi-axis a : L/2"),
+            "drawing": self.tr("Drawing (DXF)"),
             "tilt_mode": self.tr("Tilt"),
             "tilt_deg": self.tr("Tilt α"),
             "barrel_diameter_mm": self.tr("Barrel diameter"),
@@ -332,7 +390,25 @@ class RecipesScreen(Screen):
             return self.tr("optional")
         if name == "tilt_mode":
             return self.tr("fixed, or from the barrel")
+        if name in FAMILY_FIELDS:
+            spec = FAMILY_FIELDS[name]
+            return f"{format_number(spec.minimum)} … {format_number(spec.maximum)}"
+        if name == "profile_kind":
+            return self.tr("the shape of both sides")
+        if name == "drawing":
+            return self.tr("one side, head to head; scaled to L and W")
         return ""
+
+    def kind_title(self, kind: ProfileKind) -> str:
+        titles = {
+            ProfileKind.LINE_ARC_LINE: self.tr("Line–arc–line"),
+            ProfileKind.SINGLE_ARC: self.tr("Single arc"),
+            ProfileKind.PARABOLA: self.tr("Parabola"),
+            ProfileKind.ELLIPSE: self.tr("Ellipse arc"),
+            ProfileKind.SUPERELLIPSE: self.tr("Superellipse"),
+            ProfileKind.DRAWN: self.tr("Drawn (DXF)"),
+        }
+        return titles[kind]
 
     def retranslate(self) -> None:
         self.list_title.setText(self.tr("Recipes"))
@@ -475,6 +551,31 @@ class RecipesScreen(Screen):
                 lambda num, den, n=name: self.set_field(n, Ratio(num, den))
             )
             self.context.open(keypad)
+        elif name == "profile_kind":
+            chooser = ChoiceOverlay(
+                title,
+                [(self.kind_title(kind), kind) for kind in ProfileKind],
+                current=draft.profile.kind,
+                columns=2,
+            )
+            chooser.chosen.connect(lambda kind: self.set_field("profile_kind", kind))
+            self.context.open(chooser)
+        elif name == "drawing":
+            self.choose_drawing()
+        elif name in FAMILY_FIELDS:
+            spec = FAMILY_FIELDS[name]
+            current = dict(draft.profile.params).get(name, spec.default)
+            keypad_family = NumberKeypad(
+                title,
+                current,
+                spec.minimum,
+                spec.maximum,
+                spec.unit,
+                decimals=3,
+                check=lambda value, n=name: self._check(n, value),
+            )
+            keypad_family.valueAccepted.connect(lambda value, n=name: self.set_field(n, value))
+            self.context.open(keypad_family)
         elif name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             optional = name in ("barrel_diameter_mm", "barrel_perimeter_mm")
@@ -497,7 +598,7 @@ class RecipesScreen(Screen):
         recipe's validation run on the draft with that value, errors of that field only."""
         if self.draft is None:
             return ""
-        candidate = replace(self.draft, **{name: value})
+        candidate = self._with(self.draft, name, value)
         problems = field_errors(candidate, self.limits).get(name, [])
         if name == "name" and isinstance(value, str):
             clash = self.context.database.get_recipe_by_name(value)
@@ -509,12 +610,52 @@ class RecipesScreen(Screen):
                 )
         return "\n".join(p.message for p in problems)
 
+    @staticmethod
+    def _with(recipe: Recipe, name: str, value: object) -> Recipe:
+        """The recipe with one row changed (the profile's rows change its profile)."""
+        if name == "profile_kind" and isinstance(value, ProfileKind):
+            return replace(recipe, profile=with_profile_kind(recipe.profile, value))
+        if name in FAMILY_FIELDS and isinstance(value, int | float):
+            return replace(recipe, profile=with_family_value(recipe.profile, name, float(value)))
+        if name == "drawing" and isinstance(value, RecipeProfile):
+            return replace(recipe, profile=value)
+        return replace(recipe, **{name: value})
+
     def set_field(self, name: str, value: object) -> None:
         if self.draft is None:
             return
-        self.draft = replace(self.draft, **{name: value})
+        self.draft = self._with(self.draft, name, value)
         self.update_preview()
         self.show_draft()
+
+    def choose_drawing(self, directory: Path | None = None) -> None:
+        """The touch file chooser for a DXF drawing of one side."""
+        chooser = FileChooser(
+            self.tr("Import a side profile (DXF)"),
+            directory or default_exchange_dir(),
+            keyboard_layout=self.context.keyboard_layout(),
+            suffixes=(".dxf",),
+        )
+        chooser.fileChosen.connect(lambda path: self.import_drawing(Path(path)))
+        self.context.open(chooser)
+
+    def import_drawing(self, path: Path) -> None:
+        """Read the drawing into the draft (drawn profile) or say why it cannot be used."""
+        try:
+            drawing = read_dxf_profile(path.name, path.read_bytes())
+        except OSError as exc:
+            self._message(self.tr("Drawing not imported"), f"{path}: {exc.strerror or exc}")
+            return
+        except DxfProfileError as exc:
+            self._message(self.tr("Drawing not imported"), str(exc))
+            return
+        profile = RecipeProfile(
+            ProfileKind.DRAWN,
+            drawing=drawing.shape,
+            file_name=drawing.file_name,
+            file_sha256=drawing.sha256,
+        )
+        self.set_field("drawing", profile)
 
     def show_draft(self) -> None:
         """Put the draft's values, the inline errors and the button states on screen."""
@@ -546,6 +687,12 @@ class RecipesScreen(Screen):
             "thickness_mm": f"{format_number(draft.thickness_mm)} mm",
             "length_ratio": f"{draft.length_ratio}  = {draft.length_ratio.value:.4f}",
             "width_ratio": f"{draft.width_ratio}  = {draft.width_ratio.value:.4f}",
+            "profile_kind": self.kind_title(draft.profile.kind),
+            "exponent": format_optional(dict(draft.profile.params).get("exponent"), 3, ""),
+            "semi_axis_ratio": format_optional(
+                dict(draft.profile.params).get("semi_axis_ratio"), 3, ""
+            ),
+            "drawing": draft.profile.file_name or self.tr("Import a DXF file…"),
             "tilt_deg": f"{format_number(draft.tilt_deg)} °",
             "barrel_diameter_mm": format_optional(draft.barrel_diameter_mm, 1, "mm"),
             "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
@@ -555,6 +702,7 @@ class RecipesScreen(Screen):
             set_text(self.field_buttons[name], text)
         self.fixed_button.setChecked(draft.tilt_mode is TiltMode.FIXED)
         self.barrel_button.setChecked(draft.tilt_mode is TiltMode.BARREL)
+        self._show_profile_rows(draft.profile.kind)
         self.errors = field_errors(draft, self.limits)
         for name in FIELDS:
             problems = self.errors.get(name, [])
@@ -564,13 +712,29 @@ class RecipesScreen(Screen):
             button = self.field_buttons.get(name)
             if button is not None:
                 set_style_property(button, "invalid", "true" if problems else "false")
-                changed = self.current is not None and getattr(draft, name) != getattr(
+                changed = self.current is not None and field_value(draft, name) != field_value(
                     self.current, name
                 )
                 set_style_property(
                     button, "changed", "true" if changed and not problems else "false"
                 )
         self._update_buttons()
+
+    def _show_profile_rows(self, kind: ProfileKind) -> None:
+        """Only the rows the kind uses: a family's parameters, a drawing's file, lambda only
+        for line-arc-line."""
+        used = {name for name, _ in default_parameters(kind).items()}
+        visible = {
+            "exponent": "exponent" in used,
+            "semi_axis_ratio": "semi_axis_ratio" in used,
+            "drawing": kind is ProfileKind.DRAWN,
+            "length_ratio": kind is ProfileKind.LINE_ARC_LINE,
+        }
+        for name, shown in visible.items():
+            for widget in self.row_widgets[name]:
+                if widget is self.error_labels[name] and shown:
+                    continue  # the error label shows itself when there is an error
+                widget.setVisible(shown)
 
     def _update_buttons(self) -> None:
         has_current = self.current is not None and self.current.id is not None

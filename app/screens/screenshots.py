@@ -34,6 +34,7 @@ from app.machine.commands import (
 from app.machine.link import MachineLink
 from app.machine.snapshot import MachineSnapshot
 from app.machine.states import CycleStep, MachineState
+from app.resources import resources_dir
 from app.screens.application import create_main_window, ensure_application
 from app.screens.main_window import MainWindow
 
@@ -103,6 +104,10 @@ class Driver:
         for _ in range(polls):
             self.window.poller.poll()
             self.app.processEvents()
+
+
+SAMPLE_DRAWING = resources_dir() / "profiles" / "sample_side_profile.dxf"
+"""The shipped DXF drawing the recipe screenshot imports (a house-style bilge)."""
 
 
 def _homed_and_ready(driver: Driver) -> None:
@@ -225,6 +230,13 @@ def render_screenshots(
             )
             window.show_screen("manual")
             shoot("manual")
+
+            # A drawn side profile in the recipe preview: the shipped sample drawing.
+            window.show_screen("recipes")
+            recipes_screen = window.page("recipes")
+            recipes_screen.import_drawing(SAMPLE_DRAWING)  # type: ignore[attr-defined]
+            shoot("recipes-drawn-profile")
+            recipes_screen.discard()  # type: ignore[attr-defined]
         finally:
             window.poller.stop()
             window.close()

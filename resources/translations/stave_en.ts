@@ -1151,13 +1151,13 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+287" />
-        <location line="+51" />
+        <location filename="../../app/screens/recipes_screen.py" line="+341" />
+        <location line="+73" />
         <source>Recipes</source>
         <translation>Recipes</translation>
     </message>
     <message>
-        <location line="-47" />
+        <location line="-69" />
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -1183,12 +1183,32 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+60" />
+        <source>Side profile</source>
+        <translation>Side profile</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Exponent n</source>
+        <translation>Exponent n</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Semi-axis a : L/2</source>
+        <translation>Semi-axis a : L/2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drawing (DXF)</source>
+        <translation>Drawing (DXF)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+78" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-59" />
+        <location line="-77" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
@@ -1239,6 +1259,46 @@ shift</translation>
     </message>
     <message>
         <location line="+5" />
+        <source>the shape of both sides</source>
+        <translation>the shape of both sides</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>one side, head to head; scaled to L and W</source>
+        <translation>one side, head to head; scaled to L and W</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Line–arc–line</source>
+        <translation>Line–arc–line</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Single arc</source>
+        <translation>Single arc</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Parabola</source>
+        <translation>Parabola</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ellipse arc</source>
+        <translation>Ellipse arc</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Superellipse</source>
+        <translation>Superellipse</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Drawn (DXF)</source>
+        <translation>Drawn (DXF)</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>New</source>
         <translation>New</translation>
     </message>
@@ -1249,18 +1309,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+386" />
+        <location line="+474" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-385" />
-        <location line="+435" />
+        <location line="-473" />
+        <location line="+523" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-434" />
+        <location line="-522" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1297,12 +1357,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+240" />
+        <location line="+328" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-239" />
+        <location line="-327" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -1332,23 +1392,34 @@ shift</translation>
         <translation>Discard the changes to %1?</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+99" />
         <source>The name %1 is already used by recipe %2.</source>
         <translation>The name %1 is already used by recipe %2.</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+27" />
+        <source>Import a side profile (DXF)</source>
+        <translation>Import a side profile (DXF)</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <location line="+3" />
+        <source>Drawing not imported</source>
+        <translation>Drawing not imported</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>No recipe</source>
         <translation>No recipe</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+134" />
+        <location line="+157" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-132" />
+        <location line="-155" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -1358,7 +1429,12 @@ shift</translation>
         <translation>(changed, not saved)</translation>
     </message>
     <message>
-        <location line="+89" />
+        <location line="+13" />
+        <source>Import a DXF file…</source>
+        <translation>Import a DXF file…</translation>
+    </message>
+    <message>
+        <location line="+99" />
         <source>Not saved</source>
         <translation>Not saved</translation>
     </message>

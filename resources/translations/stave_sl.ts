@@ -1151,13 +1151,13 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+287"/>
-        <location line="+51"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+341"/>
+        <location line="+73"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-69"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
@@ -1183,12 +1183,32 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+60"/>
+        <source>Side profile</source>
+        <translation>Stranski profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Exponent n</source>
+        <translation>Eksponent n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Semi-axis a : L/2</source>
+        <translation>Polos a : L/2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drawing (DXF)</source>
+        <translation>Risba (DXF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+78"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-77"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
@@ -1239,6 +1259,46 @@ izmena</translation>
     </message>
     <message>
         <location line="+5"/>
+        <source>the shape of both sides</source>
+        <translation>oblika obeh stranic</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>one side, head to head; scaled to L and W</source>
+        <translation>ena stranica, od glave do glave; prilagojena L in W</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Line–arc–line</source>
+        <translation>Premica–lok–premica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Single arc</source>
+        <translation>En lok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parabola</source>
+        <translation>Parabola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ellipse arc</source>
+        <translation>Eliptični lok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Superellipse</source>
+        <translation>Superelipsa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drawn (DXF)</source>
+        <translation>Narisan (DXF)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>New</source>
         <translation>Nov</translation>
     </message>
@@ -1249,18 +1309,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+386"/>
+        <location line="+474"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-385"/>
-        <location line="+435"/>
+        <location line="-473"/>
+        <location line="+523"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-522"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1297,12 +1357,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+240"/>
+        <location line="+328"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-239"/>
+        <location line="-327"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -1332,23 +1392,34 @@ izmena</translation>
         <translation>Zavržem spremembe recepta %1?</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+99"/>
         <source>The name %1 is already used by recipe %2.</source>
         <translation>Ime %1 že uporablja recept %2.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+27"/>
+        <source>Import a side profile (DXF)</source>
+        <translation>Uvoz stranskega profila (DXF)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+3"/>
+        <source>Drawing not imported</source>
+        <translation>Risba ni uvožena</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>No recipe</source>
         <translation>Ni recepta</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+134"/>
+        <location line="+157"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-132"/>
+        <location line="-155"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -1358,7 +1429,12 @@ izmena</translation>
         <translation>(spremenjen, ni shranjen)</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+13"/>
+        <source>Import a DXF file…</source>
+        <translation>Uvozi datoteko DXF…</translation>
+    </message>
+    <message>
+        <location line="+99"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>
