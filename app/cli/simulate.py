@@ -36,8 +36,11 @@ from app.cli.recipe_args import add_recipe_source
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
 from app.drivers.contracts import FAULT_KINDS, FaultInjector
+from app.geometry.barrel_section import next_joint_t
 from app.machine import commands as cmd
+from app.machine.barrel_job import TOO_NARROW_ALARM
 from app.machine.controller import MachineController
+from app.machine.cycle_plan import PlannedStave
 from app.machine.process_params import motion_limits
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState
@@ -170,12 +173,25 @@ class CycleReport:
     cut_length_mm: dict[str, float] = field(default_factory=dict)
     max_contour_error_mm: float = 0.0
     injection: str = ""  # what the injected fault did, in words ("" without --inject)
+    barrel_stave_number: int | None = None  # with --barrel: the stave's place in the barrel
+    tilt_a_deg: float | None = None
+    tilt_b_deg: float | None = None
+    target_width_mm: float | None = None  # the width it was cut to when narrower than the board
+    passes: int | None = None
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_recipe_source(parser)
+    parser.add_argument("--width", type=float, metavar="MM", help="width of every board put in")
     parser.add_argument(
-        "--width", type=float, required=True, metavar="MM", help="width of every board put in"
+        "--barrel",
+        action="store_true",
+        help="raise a barrel of the recipe (round or oval) until it closes",
+    )
+    parser.add_argument(
+        "--widths",
+        metavar="W1,W2,...",
+        help="with --barrel: the boards' widths in order (default: the simulation's boards)",
     )
     parser.add_argument("--cycles", type=int, default=1, metavar="N")
     parser.add_argument(
@@ -279,14 +295,14 @@ def _tick_pacing(runtime: MachineRuntime, realtime: bool) -> Iterator[None]:
 
 
 def _run_cycle(
-    runtime: MachineRuntime, width_mm: float, injection: Injection | None, watch: Watch
+    runtime: MachineRuntime, width_mm: float | None, injection: Injection | None, watch: Watch
 ) -> CycleReport:
+    """One board through the machine (``width_mm`` None: drawn from the simulation's)."""
     c = runtime.controller
     world = _sim_world(runtime)
-    report = CycleReport(width_mm)
     world.remove_board()
     runtime.run_for(0.1)  # the part sensor must see the finished board gone
-    world.load_board(width_mm)
+    report = CycleReport(world.load_board(width_mm).true_width_mm)
     runtime.run_for(0.1)
     alarms_before = {a.alarm_id for a in c.alarms.views()}
     c.post(cmd.Start())
@@ -365,7 +381,10 @@ def simulate(
     args: argparse.Namespace, config: MachineConfig, db_path: Path, out: TextIO
 ) -> dict[str, Any]:
     injection = Injection.parse(args.inject) if args.inject is not None else None
-    if not math.isfinite(args.width) or args.width <= 0:
+    widths = _barrel_widths(args)
+    if args.width is None and not args.barrel:
+        raise UsageError("--width is missing: the width of every board in mm (or --barrel)")
+    if args.width is not None and (not math.isfinite(args.width) or args.width <= 0):
         raise UsageError(f"--width {args.width:g} is not allowed: a finite number of mm > 0")
     if not 1 <= args.cycles <= MAX_CYCLES:
         raise UsageError(f"--cycles {args.cycles} is not allowed: 1 to {MAX_CYCLES}")
@@ -391,10 +410,17 @@ def simulate(
         recipe = _with_profile_options(args, _recipe_from_args(args, runtime.controller), runtime)
         assert recipe.id is not None
         runtime.controller.post(cmd.SelectRecipe(recipe.id))
+        if args.barrel:
+            runtime.controller.post(cmd.StartBarrel())
+            runtime.run_for(2 * runtime.period_s)
+            if runtime.controller.barrel is None:
+                raise UsageError(f"--barrel: {runtime.controller.message}")
         with _tick_pacing(runtime, args.realtime):
             _home(runtime)
             reports = []
-            for _ in range(args.cycles):
+            if args.barrel:
+                reports = _raise_barrel(runtime, args.width, widths, watch, out, args.json)
+            for _ in range(0 if args.barrel else args.cycles):
                 report = _run_cycle(runtime, args.width, injection, watch)
                 reports.append(report)
                 if not args.json:
@@ -424,11 +450,103 @@ def simulate(
             },
             "cycles": [_cycle_json(r) for r in reports],
         }
+        if args.barrel:
+            result.update(_barrel_result(c, reports))
         return result
     finally:
         runtime.shutdown()
         if trace_file is not None:
             trace_file.close()
+
+
+MAX_BARREL_BOARDS = 200
+"""More boards than any barrel takes: a simulated barrel that has not closed by then stops."""
+
+
+def _barrel_widths(args: argparse.Namespace) -> list[float] | None:
+    """The --widths list (None: boards drawn from the simulation's distribution)."""
+    if args.widths is None:
+        return None
+    if not args.barrel:
+        raise UsageError("--widths is only for --barrel: use --width for single staves")
+    widths: list[float] = []
+    for text in args.widths.split(","):
+        try:
+            width = float(text)
+        except ValueError:
+            width = math.nan
+        if not (math.isfinite(width) and width > 0):
+            raise UsageError(
+                f"--widths: {text.strip()!r} is not allowed: a finite number of mm > 0"
+            )
+        widths.append(width)
+    return widths
+
+
+def _raise_barrel(
+    runtime: MachineRuntime,
+    width_mm: float | None,
+    widths: list[float] | None,
+    watch: Watch,
+    out: TextIO,
+    quiet: bool,
+) -> list[CycleReport]:
+    """Boards in until the barrel closes (or the given widths run out). A board too narrow
+    to close it (E034) is taken off, as an operator choosing a wider board would; the next
+    board comes in after the operator's reset."""
+    c = runtime.controller
+    queue = list(widths) if widths is not None else None
+    reports: list[CycleReport] = []
+    while len(reports) < MAX_BARREL_BOARDS:
+        barrel = c.barrel
+        if barrel is not None and barrel.closed:
+            break
+        if queue is not None and not queue:
+            break
+        board = queue.pop(0) if queue is not None else width_mm
+        report = _run_cycle(runtime, board, None, watch)
+        if c.finished_cycles and report.result == "ok":
+            planned = c.finished_cycles[-1][1].planned
+            if planned is not None:
+                _barrel_fields(report, planned)
+        reports.append(report)
+        if not quiet:
+            print(_describe(report), file=out)
+        if report.result != "ok":
+            if TOO_NARROW_ALARM not in {a.code for a in c.alarms.views()}:
+                break
+            c.post(cmd.Reset())
+            runtime.run_for(1.0)
+            _home(runtime)
+    return reports
+
+
+def _barrel_fields(report: CycleReport, planned: PlannedStave) -> None:
+    placed = planned.barrel_stave
+    report.barrel_stave_number = None if placed is None else placed.number
+    report.tilt_a_deg = planned.cut.tilts.a_deg
+    report.tilt_b_deg = planned.cut.tilts.b_deg
+    report.target_width_mm = None if placed is None else placed.target_width_mm
+    report.passes = planned.cut.passes
+
+
+def _barrel_result(c: MachineController, reports: list[CycleReport]) -> dict[str, Any]:
+    """Whether the barrel closed, and the gap the cut staves leave: the last stave's second
+    joint, placed at the width it was cut to, against the first stave's first joint."""
+    barrel = c.barrel
+    closed = barrel is not None and barrel.closed
+    gap: float | None = None
+    if closed and barrel is not None and c.finished_cycles:
+        planned = c.finished_cycles[-1][1].planned
+        if planned is not None and planned.barrel_stave is not None:
+            start = planned.barrel_stave.stave.start_t_rad
+            end = next_joint_t(barrel.section, start, planned.cut.width_mm)
+            gap = math.dist(barrel.section.point(end), barrel.section.point(0.0))
+    return {
+        "barrel_closed": closed,
+        "barrel_staves": 0 if barrel is None else len(barrel.staves),
+        "closing_gap_mm": gap,
+    }
 
 
 def _cycle_json(r: CycleReport) -> dict[str, Any]:
@@ -444,6 +562,17 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
         "result": r.result,
         "alarms": r.alarms,
         "injection": r.injection or None,
+        **(
+            {}
+            if r.passes is None
+            else {
+                "barrel_stave_number": r.barrel_stave_number,
+                "tilt_a_deg": r.tilt_a_deg,
+                "tilt_b_deg": r.tilt_b_deg,
+                "target_width_mm": r.target_width_mm,
+                "passes": r.passes,
+            }
+        ),
     }
 
 

@@ -52,6 +52,7 @@ CATALOGUE: dict[str, AlarmDefinition] = {
         AlarmDefinition("E031", "Width gauge reading not understood", Severity.FAULT),
         AlarmDefinition("E032", "Measured width not allowed for this recipe", Severity.FAULT),
         AlarmDefinition("E033", "Width gauge disconnected", Severity.FAULT),
+        AlarmDefinition("E034", "Board too narrow to close the barrel", Severity.FAULT),
         AlarmDefinition("E040", "Clamps did not reach their sensor", Severity.FAULT),
         AlarmDefinition("E041", "Centering device did not reach its sensor", Severity.FAULT),
         AlarmDefinition("E042", "Spindle did not start", Severity.FAULT),

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from app.machine.barrel_set import BoardChoice
+
 
 @dataclass(frozen=True)
 class Start:
@@ -141,6 +143,18 @@ class ClearFaults:
 
 
 @dataclass(frozen=True)
+class StartBarrel:
+    """Start a new barrel of the selected recipe's belly section: the next stave is its first."""
+
+
+@dataclass(frozen=True)
+class ChooseBoard:
+    """The operator's answer to a board too narrow to close the barrel (alarm E034)."""
+
+    choice: BoardChoice
+
+
+@dataclass(frozen=True)
 class LoadBoard:
     """Simulation only: put a board of ``width_mm`` (or a random one) on the table."""
 
@@ -165,6 +179,8 @@ Command = (
     | Reset
     | Home
     | SelectRecipe
+    | StartBarrel
+    | ChooseBoard
     | EnterManual
     | LeaveManual
     | JogContinuous

@@ -38,6 +38,8 @@ from app.drivers.contracts import (
 from app.machine import commands as cmd
 from app.machine.alarms import AlarmManager
 from app.machine.axes import AxisGroup
+from app.machine.barrel_job import new_barrel, plan_barrel_board
+from app.machine.barrel_set import BarrelSet, BoardChoice
 from app.machine.board_resume import continue_job, interruption
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
 from app.machine.cycle_plan import PlannedStave, plan_board
@@ -136,6 +138,8 @@ class MachineController:
         self._seq = 0
         self._moved_since_latch = False
         self._finished_board_on_table = False
+        self.barrel: BarrelSet | None = None  # the barrel being raised (None: single staves)
+        self.board_choice: BoardChoice | None = None  # the answer to E034, for the next board
         self.sim_tools = SimulationTools(backend)
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         recipe_id = store.first_recipe_id()
@@ -234,8 +238,16 @@ class MachineController:
         limits_motion = motion_limits(self.config, self.params)
         params = dict(self.params)
 
+        if self.barrel is not None and self.barrel.closed:
+            self.barrel = self.barrel.next_barrel()  # the board after a closed barrel starts one
+        barrel, choice = self.barrel, self.board_choice
+
         def plan_job(width_mm: float, start: tuple[float, float, float]) -> PlannedStave:
-            return plan_board(recipe, width_mm, params, limits_stave, limits_motion, start)
+            if barrel is None:
+                return plan_board(recipe, width_mm, params, limits_stave, limits_motion, start)
+            return plan_barrel_board(
+                barrel, choice, recipe, width_mm, params, limits_stave, limits_motion, start
+            )
 
         self.cycle = AutomaticCycle(
             recipe=recipe,
@@ -361,8 +373,24 @@ class MachineController:
         if recipe is None:
             self._refuse(f"recipe {c.recipe_id} does not exist")
             return
+        if self.recipe is None or recipe.id != self.recipe.id:
+            self.barrel = None  # a barrel is raised from one recipe's staves
         self.recipe = recipe
         self._publish_recipe_preview()
+
+    def _on_StartBarrel(self, _c: cmd.StartBarrel) -> None:
+        if self.recipe is None:
+            self._refuse("select a recipe first")
+            return
+        number = 1 if self.barrel is None else self.barrel.number + 1
+        barrel = new_barrel(self.recipe, stave_limits(self.config), number)
+        if barrel is None:
+            self._refuse(f"recipe {self.recipe.name!r} has a fixed tilt: it makes no barrel")
+            return
+        self.barrel, self.board_choice = barrel, None
+
+    def _on_ChooseBoard(self, c: cmd.ChooseBoard) -> None:
+        self.board_choice = c.choice
 
     def _publish_recipe_preview(self) -> None:
         """Show the selected recipe's stave before a board is measured."""
@@ -772,6 +800,9 @@ class MachineController:
         if self.interrupted is not None:
             self._end_interrupted("ok", cycle)
         self.store.record_piece(piece)
+        placed = cycle.planned.barrel_stave if cycle.planned is not None else None
+        if self.barrel is not None and placed is not None:
+            self.barrel, self.board_choice = self.barrel.with_stave(placed), None
         self.pieces_shift += 1
         self.pieces_total += 1
         self.last_width_mm = cycle.outcome.width_mm

@@ -16,8 +16,9 @@ from app.data.recipe import Recipe
 from app.geometry.curved_profile import SideProfile
 from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
-from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, cut_stave
+from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, StaveSpec, cut_stave
 from app.geometry.toolpath import ToolPath
+from app.machine.barrel_set import NextStave
 from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.stave_plan import StavePlan, plan_stave
@@ -36,6 +37,8 @@ class PlanningError(Exception):
 class PlannedStave:
     cut: StaveCut
     plan: StavePlan
+    barrel_stave: NextStave | None = None
+    """Where the stave goes in the barrel being raised (None: no barrel)."""
 
     @property
     def width_mm(self) -> float:
@@ -62,14 +65,16 @@ def plan_board(
     stave_limits: StaveLimits,
     motion_limits: MotionLimits,
     start_xyz: tuple[float, float, float],
+    stave: StaveSpec | None = None,
 ) -> PlannedStave:
     """Validate the measured width against the recipe and the machine, then plan the cut.
 
     Raises PlanningError with alarm E032 (width not allowed), E050 (outside the travel) or
     E051 (the planner failed), E052 (the approach would cross the board), never anything
-    else."""
+    else. ``stave`` replaces the recipe's (a barrel's stave: its place's bevels, a target
+    width)."""
     try:
-        cut = cut_stave(recipe.stave, width_mm, params, stave_limits)
+        cut = cut_stave(recipe.stave if stave is None else stave, width_mm, params, stave_limits)
     except StaveCutRefused as exc:
         code = "E050" if exc.stage is CutStage.TRAVEL else "E032"
         message = "; ".join(e.message for e in exc.errors)

@@ -178,6 +178,8 @@ RULES = {
     "SetClamps": may_jog,
     "SetSpindle": may_spindle,
     "SelectRecipe": may_select_recipe,
+    "StartBarrel": may_select_recipe,
+    "ChooseBoard": may_select_recipe,
     "SetFeedOverride": always,
     "Acknowledge": always,
     "ReloadParameters": always,
