@@ -32,16 +32,21 @@ class LineBuffer:
         self.max_line_bytes = max_line_bytes
         self._buffer = bytearray()
         self._skipping = False  # discard until the next terminator
+        self._overflowed = False  # ... because the line ran away (already reported)
 
     def clear(self) -> None:
         self._buffer.clear()
         self._skipping = False
+        self._overflowed = False
 
     def resync(self) -> None:
         """Forget everything and skip to the next terminator: the next complete line starts
-        after now (a streaming gauge's line that began before a request is not its answer)."""
+        after now (a streaming gauge's line that began before a request is not its answer).
+        A gauge babbling without terminators is still reported as an overflow (garbage, not
+        silence) once the skipped part grows beyond a line."""
         self._buffer.clear()
         self._skipping = True
+        self._overflowed = False
 
     def feed(self, data: bytes) -> list[bytes | Overflow]:
         """Complete lines (without the terminator) in the order they ended."""
@@ -56,15 +61,17 @@ class LineBuffer:
             del self._buffer[: end + len(term)]
             if self._skipping:
                 self._skipping = False
+                self._overflowed = False
                 continue
             out.append(line)
         if len(self._buffer) > self.max_line_bytes:
             # Keep a tail that could be the start of a split terminator.
-            if not self._skipping:
+            if not self._overflowed:
                 out.append(Overflow(len(self._buffer), bytes(self._buffer[:32])))
             keep = len(term) - 1
             del self._buffer[: len(self._buffer) - keep]
             self._skipping = True
+            self._overflowed = True
         return out
 
 

@@ -5,6 +5,9 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
+from hypothesis import given
+from hypothesis import settings as settings_
+from hypothesis import strategies as st
 
 from app.config import parse_config
 from app.drivers.serial_gauge.lines import LineBuffer, Overflow, parse_line
@@ -88,3 +91,28 @@ def test_empty_lines_and_overflow() -> None:
     assert parse_line(b"\r", settings()) is None
     reading = parse_line(Overflow(200, b"\x00\x01abc"), settings())
     assert reading is not None and "200 bytes without a line terminator" in reading.error
+
+
+def test_a_babbling_stream_after_a_resync_is_garbage_not_silence() -> None:
+    buffer = LineBuffer(b"\n", 16)
+    buffer.resync()  # stream mode: the reading starts after the next terminator
+    out = buffer.feed(b"x" * 40)  # ... which never comes
+    assert len(out) == 1 and isinstance(out[0], Overflow)
+    assert buffer.feed(b"y" * 40) == []  # reported once
+    assert buffer.feed(b"\nW=5\n") == [b"W=5"]
+
+
+@settings_(max_examples=200, deadline=None)
+@given(st.lists(st.binary(max_size=40), max_size=12), st.booleans())
+def test_any_bytes_give_lines_or_readings_never_an_exception(
+    chunks: list[bytes], resync: bool
+) -> None:
+    s = settings(max_line_bytes=16, min_width_mm=30.0, max_width_mm=300.0)
+    buffer = LineBuffer(b"\r\n", 16)
+    if resync:
+        buffer.resync()
+    for chunk in chunks:
+        for line in buffer.feed(chunk):
+            parse_line(line, s)
+            if isinstance(line, bytes):
+                assert len(line) <= 16 + len(chunk) and b"\r\n" not in line
