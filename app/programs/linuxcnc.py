@@ -3,8 +3,9 @@
 Words: G21 mm, G17 X-Y plane, G90 absolute, G91.1 arc centres relative to the arc's start,
 G94 feed in mm/min, G40/G49 no cutter or length compensation (the tool path is already the
 tool centre's), G64 P0.001 so that blending never leaves the path by more than 1 um. The G54
-offset is set to zero and G92 cancelled, so the coordinates are the jointer's machine
-coordinates whatever offsets the control held. The tilt is the rotary axis A in degrees.
+offset is set to zero and not rotated (R0: G10 L2 without it keeps the rotation the control
+held), and G92 cancelled, so the coordinates are the jointer's machine coordinates whatever
+offsets the control held. The tilt is the rotary axis A in degrees.
 Checked in the test suite by LinuxCNC's own interpreter, rs274.
 """
 
@@ -14,7 +15,7 @@ from app.programs.header import ProgramInfo, format_number, plain_text
 from app.programs.moves import StaveMoves, motion_blocks
 
 MODAL_SETUP = "G21 G17 G90 G91.1 G94 G40 G49 G80 G64 P0.001"
-ZERO_OFFSETS = "G10 L2 P1 X0 Y0 Z0 A0 (G54 = machine coordinates)\nG54\nG92.1"
+ZERO_OFFSETS = "G10 L2 P1 R0 X0 Y0 Z0 A0 (G54 = machine coordinates, not rotated)\nG54\nG92.1"
 
 
 def comment(text: str) -> str:

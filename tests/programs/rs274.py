@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 PACKAGE = "linuxcnc-uspace"
-_CALL = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z_]+)\((.*)\)\s*$")
+_CALL = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z][A-Z0-9_]*)\((.*)\)\s*$")
 _MOTION = ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED")
 
 
@@ -54,6 +54,7 @@ class Interpretation:
     stderr: str
     moves: tuple[CanonicalMove, ...]
     calls: tuple[str, ...]  # every canonical call's name, in order
+    arguments: tuple[str, ...] = ()  # and its arguments as printed, in the same order
 
 
 def interpret(program: Path) -> Interpretation:
@@ -67,6 +68,7 @@ def interpret(program: Path) -> Interpretation:
     )
     moves: list[CanonicalMove] = []
     calls: list[str] = []
+    arguments_of: list[str] = []
     feed = 0.0
     for line in done.stdout.splitlines():
         match = _CALL.match(line)
@@ -74,6 +76,7 @@ def interpret(program: Path) -> Interpretation:
             continue
         name, arguments = match.group(1), match.group(2)
         calls.append(name)
+        arguments_of.append(arguments)
         if name == "SET_FEED_RATE":
             feed = float(arguments)
         if name not in _MOTION:
@@ -94,7 +97,9 @@ def interpret(program: Path) -> Interpretation:
             )
         else:
             moves.append(CanonicalMove(name, values[0], values[1], values[3], feed))
-    return Interpretation(done.returncode, done.stderr, tuple(moves), tuple(calls))
+    return Interpretation(
+        done.returncode, done.stderr, tuple(moves), tuple(calls), tuple(arguments_of)
+    )
 
 
 def without_standstill(

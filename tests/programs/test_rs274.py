@@ -284,3 +284,29 @@ def test_two_bevels_each_side_its_own_tilt_offset_and_pivot_shift(tmp_path: Path
         fixed = linuxcnc.write_program(stave_moves(toolpath), replace(info, width_mm=width))
         compare(toolpath, _run(tmp_path, fixed), None)
         compare(toolpath, _run(tmp_path, _with_width(program, width), "p.ngc"), None)
+
+
+def test_offsets_the_control_held_do_not_move_the_program(tmp_path: Path) -> None:
+    """A rotated G54 offset and a G92 offset left on the control: the program clears both
+    before it moves (rs274 prints program coordinates and the offsets and rotation in force
+    as calls of their own), so it runs in the jointer's machine coordinates."""
+    from tests.programs.conftest import RECIPES
+
+    toolpath = stave_toolpath(RECIPES[1], 150.0, PARAMS, LIMITS)
+    lines = export_program(RECIPES[1], 150.0, PARAMS, LIMITS, ExportOptions()).splitlines()
+    prelude = ["G10 L2 P1 R30 X100 Y-50 A5", "G54", "G0 X0 Y0", "G92 X10 Y10 A1"]
+    path = tmp_path / "offsets.ngc"
+    path.write_text("\n".join([lines[0], *prelude, *lines[1:]]) + "\n", encoding="utf-8")
+    result = interpret(path)
+    assert result.returncode == 0, result.stderr
+    motion = [i for i, name in enumerate(result.calls) if name == "STRAIGHT_TRAVERSE"]
+    in_force: dict[str, str] = {}
+    for name, arguments in zip(
+        result.calls[: motion[1]], result.arguments[: motion[1]], strict=True
+    ):
+        in_force[name] = arguments
+    assert in_force["SET_XY_ROTATION"] == "0.0000"
+    for offset in ("SET_G5X_OFFSET", "SET_G92_OFFSET"):
+        assert {float(v) for v in in_force[offset].split(",")[-6:]} == {0.0}
+    moves = without_standstill(result.moves, (0.0, 0.0, 0.0))
+    compare(toolpath, moves[2:], None)  # after the prelude's move and the move home
