@@ -66,6 +66,8 @@ async def _serve(
         notice(f"OPC UA server did not start: {exc}")
         return
     notice(f"OPC UA server listening on {settings.endpoint_url}")
+    for warning in settings.insecure_choices():
+        notice(f"warning: OPC UA {warning} is on (commissioning only)")
     try:
         while os.getppid() == parent_pid:
             latest: MachineSnapshot | str | None = None

@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import socket
 import tempfile
+import time
 from collections.abc import Callable
 from datetime import UTC, datetime
 from pathlib import Path
@@ -106,6 +107,7 @@ class PlantServer:
         self._counted_total = -1
         self._start_counts: dict[str, int] | None = None
         self._events: Any = None
+        self._source_time = datetime.now(UTC)
 
     # ------------------------------------------------------------------ start and stop
 
@@ -268,7 +270,11 @@ class PlantServer:
         if self._written.get(key, object()) == value:
             return
         self._written[key] = value
-        await node.write_value(ua.DataValue(ua.Variant(value, vtype)))
+        # The source timestamp is when the machine's snapshot was taken, so a client sees
+        # when the change happened, not when this process got to it.
+        await node.write_value(
+            ua.DataValue(ua.Variant(value, vtype), SourceTimestamp=self._source_time)
+        )
 
     async def _write_own(self, name: str, value: Any, vtype: ua.VariantType) -> None:
         assert self.nodes is not None
@@ -279,6 +285,9 @@ class PlantServer:
         nodes = self.nodes
         if nodes is None:
             return
+        self._source_time = datetime.fromtimestamp(
+            snapshot.wall_time if snapshot is not None else time.time(), UTC
+        )
         now = self._clock()
         flags = unit_flags(snapshot)
         state = unit_state(flags)

@@ -70,7 +70,7 @@ class NodeClient:
             else:
                 self.notifications.append(message)
 
-    def ask(self, op: str, timeout_s: float = 30.0, **fields: Any) -> dict[str, Any]:
+    def ask(self, op: str, timeout_s: float = 90.0, **fields: Any) -> dict[str, Any]:
         assert self.process.stdin is not None
         self.process.stdin.write(json.dumps({"op": op, **fields}) + "\n")
         self.process.stdin.flush()

@@ -31,6 +31,10 @@ from app.plant.settings import OpcuaSettings
 from app.plant.state_map import unit_flags, unit_state
 from tests.plant.node_peer import NodeClient, free_port, require_node_opcua, wait_until
 
+# Loading the OPC Foundation's models takes the server 10-20 s of CPU; on a loaded two-core
+# machine the first test (which waits for it) and the cutting test need more than the default.
+pytestmark = pytest.mark.timeout(600)
+
 PASSWORD = "plant-pass-1"
 BARRIQUE = "Barrique 225 l Bordeaux"
 MACHINE = ["Machinery:Machines", "own:StaveJointer"]
@@ -121,7 +125,7 @@ def plant(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Plant]:
                 (plant_process.commands() or True)
                 and any("listening" in n for n in plant_process.notices)
             ),
-            90.0,
+            400.0,
             0.2,
         ), f"the OPC UA server did not start: {plant_process.notices}"
         # A new client's certificate is refused until a technician trusts it.
@@ -223,10 +227,10 @@ def test_subscribed_state_counters_and_alarm_events_while_staves_are_cut(plant: 
             seen = [n["value"] for n in node.notifications if n.get("notification") == key]
             return seen[-1] if seen else None
 
-        assert wait_until(lambda: last("state") == 4, 10.0)  # ERROR
+        assert wait_until(lambda: last("state") == 4, 30.0)  # ERROR
         states = {n["value"] for n in node.notifications if n.get("notification") == "state"}
         assert {2, 3, 4} <= states  # READY, WORKING, ERROR
-        assert wait_until(lambda: last("pieces") == counts["ok"], 10.0), (last("pieces"), counts)
+        assert wait_until(lambda: last("pieces") == counts["ok"], 30.0), (last("pieces"), counts)
         assert last("runs") == sum(counts.values())
         events = [n for n in node.notifications if n.get("event")]
         drive = [e for e in events if e.get("messageId") == "E010"]
