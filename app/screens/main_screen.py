@@ -25,10 +25,12 @@ from PySide6.QtWidgets import (
 
 from app.data.recipe import Recipe
 from app.machine.commands import (
+    Abandon,
     Home,
     LoadBoard,
     Reset,
     ResetShiftCounter,
+    Resume,
     SelectRecipe,
     Start,
     Stop,
@@ -92,7 +94,7 @@ class MainScreen(Screen):
 
         self.start_button = touch_button("startButton", "start")
         self.stop_button = touch_button("stopButton", "stop")
-        self.start_button.clicked.connect(lambda: self.context.send(Start()))
+        self.start_button.clicked.connect(self.press_start)
         self.stop_button.clicked.connect(lambda: self.context.send(Stop()))
         self.hint_label = styled_label("", "message", "startHint")
         self.hint_label.setWordWrap(True)
@@ -255,6 +257,27 @@ class MainScreen(Screen):
         overlay.chosen.connect(lambda recipe_id: self.context.send(SelectRecipe(recipe_id)))
         self.context.open(overlay)
 
+    def _board_choices(self) -> list[tuple[str, object]]:
+        """Resume / Abandon, where the machine allows them (a board is partly cut)."""
+        allowed = self.snapshot.allowed if self.snapshot is not None else {}
+        choices: list[tuple[str, object]] = []
+        if allowed.get("Resume") == "":
+            choices.append((self.tr("Resume the cut"), Resume()))
+        if allowed.get("Abandon") == "":
+            choices.append((self.tr("Abandon the board"), Abandon()))
+        return choices
+
+    def press_start(self) -> None:
+        """Start; with a partly cut board on the table, the choice between resuming its cut
+        and abandoning it (a fresh cycle would cut through it)."""
+        choices = self._board_choices()
+        if not choices:
+            self.context.send(Start())
+            return
+        overlay = ChoiceOverlay(self.tr("A board is partly cut"), choices, columns=1)
+        overlay.chosen.connect(self.context.send)
+        self.context.open(overlay)
+
     def confirm_reset_shift(self) -> None:
         overlay = ConfirmOverlay(
             self.tr("New shift"),
@@ -294,6 +317,8 @@ class MainScreen(Screen):
             self._show_recipe_number()
         allowed = snapshot.allowed
         self._enable(self.start_button, "Start")
+        if self._board_choices():
+            self.start_button.setEnabled(True)
         self._enable(self.stop_button, "Stop")
         self._enable(self.home_button, "Home")
         self._enable(self.reset_button, "Reset")

@@ -32,6 +32,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP("AlarmText", "A drive or the I/O refused a request"),
     QT_TRANSLATE_NOOP("AlarmText", "Axis lost its home position"),
     QT_TRANSLATE_NOOP("AlarmText", "Board removed during the cycle"),
+    QT_TRANSLATE_NOOP("AlarmText", "Board too narrow to close the barrel"),
     QT_TRANSLATE_NOOP("AlarmText", "Centering device did not reach its sensor"),
     QT_TRANSLATE_NOOP("AlarmText", "Clamps did not reach their sensor"),
     QT_TRANSLATE_NOOP("AlarmText", "Communication with the drives or I/O lost"),

@@ -62,6 +62,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Board too narrow to close the barrel</source>
+        <translation>Board too narrow to close the barrel</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Centering device did not reach its sensor</source>
         <translation>Centering device did not reach its sensor</translation>
     </message>
@@ -410,7 +415,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-53" />
+        <location filename="catalogue_strings.py" line="-54" />
         <source>a cycle is already running</source>
         <translation>a cycle is already running</translation>
     </message>
@@ -543,7 +548,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+191" />
+        <location filename="../../app/screens/main_screen.py" line="+193" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -647,7 +652,22 @@ shift</translation>
         <translation>Choose a recipe</translation>
     </message>
     <message>
+        <location line="+13" />
+        <source>Resume the cut</source>
+        <translation>Resume the cut</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Abandon the board</source>
+        <translation>Abandon the board</translation>
+    </message>
+    <message>
         <location line="+10" />
+        <source>A board is partly cut</source>
+        <translation>A board is partly cut</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>New shift</source>
         <translation>New shift</translation>
     </message>
@@ -672,7 +692,7 @@ shift</translation>
         <translation>No. %1</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+64" />
         <source>No cycle running</source>
         <translation>No cycle running</translation>
     </message>
@@ -975,7 +995,7 @@ shift</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+29" />
+        <location filename="catalogue_strings.py" line="+30" />
         <source>Distance beyond the board's right end where the tilt changes sides</source>
         <translation>Distance beyond the board's right end where the tilt changes sides</translation>
     </message>

@@ -62,6 +62,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Board too narrow to close the barrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Centering device did not reach its sensor</source>
         <translation>Centrirna naprava ni dosegla senzorja</translation>
     </message>
@@ -410,7 +415,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-53"/>
+        <location filename="catalogue_strings.py" line="-54"/>
         <source>a cycle is already running</source>
         <translation>cikel že teče</translation>
     </message>
@@ -543,7 +548,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+191"/>
+        <location filename="../../app/screens/main_screen.py" line="+193"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -647,7 +652,22 @@ izmena</translation>
         <translation>Izberite recept</translation>
     </message>
     <message>
+        <location line="+13"/>
+        <source>Resume the cut</source>
+        <translation>Nadaljuj rezanje</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Abandon the board</source>
+        <translation>Opusti desko</translation>
+    </message>
+    <message>
         <location line="+10"/>
+        <source>A board is partly cut</source>
+        <translation>Deska je delno odrezana</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>New shift</source>
         <translation>Nova izmena</translation>
     </message>
@@ -672,7 +692,7 @@ izmena</translation>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>No cycle running</source>
         <translation>Cikel ne teče</translation>
     </message>
@@ -975,7 +995,7 @@ izmena</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+29"/>
+        <location filename="catalogue_strings.py" line="+30"/>
         <source>Distance beyond the board&apos;s right end where the tilt changes sides</source>
         <translation>Razdalja za desnim koncem deske, kjer se nagib zamenja</translation>
     </message>

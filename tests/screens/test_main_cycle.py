@@ -87,6 +87,32 @@ def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
     assert stopped.pieces_shift == 0
 
 
+def test_start_after_a_stop_offers_resume_or_abandon(qtbot, window, database, tap) -> None:
+    home_from_main_screen(qtbot, window, tap)
+    recipe_id = database.list_recipes()[0].id
+    tap(find_button(window, "recipeList"))
+    tap(window.overlay().buttons[0])
+    wait_for(qtbot, window, lambda s: s.recipe_id == recipe_id and not s.allowed.get("Start"))
+    tap(find_button(window, "startButton"))
+    wait_for(qtbot, window, lambda s: s.state is MachineState.AUTOMATIC)
+    tap(find_button(window, "loadBoardButton"))
+    wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A")
+    tap(find_button(window, "stopButton"))
+    stopped = wait_for(qtbot, window, lambda s: s.state is MachineState.READY)
+    assert "partly cut" in stopped.allowed["Start"]
+    assert window.page("main").hint_label.text() == stopped.allowed["Start"]
+    start = find_button(window, "startButton")
+    assert start.isEnabled(), "Start offers what can be done with the board"
+    tap(start)
+    overlay = window.overlay()
+    assert isinstance(overlay, ChoiceOverlay)
+    assert [b.text() for b in overlay.buttons] == ["Resume the cut", "Abandon the board"]
+    tap(overlay.buttons[0])
+    wait_for(qtbot, window, lambda s: s.state is MachineState.AUTOMATIC)
+    done = wait_for(qtbot, window, lambda s: s.pieces_shift == 1)
+    assert "Resume" in done.allowed and done.allowed["Resume"] == "no board is partly cut"
+
+
 def test_new_shift_asks_first(qtbot, window, tap) -> None:
     tap(find_button(window, "resetShiftButton"))
     overlay = window.overlay()
