@@ -50,7 +50,8 @@ STEP_NAMES = {step.name.lower(): step for step in CycleStep if step is not Cycle
 Start, so the cycle leaves that step in its first period, and a fault "injected" there would
 pass silently."""
 MAX_CYCLES = 100_000
-SETTLE_AFTER_ALARM_S = 3.0  # how long the run watches for motion after an alarm
+SETTLE_AFTER_ALARM_S = 3.0
+RESET_TIMEOUT_S = 5.0  # how long the run watches for motion after an alarm
 HOMING_TIMEOUT_S = 300.0
 CYCLE_TIMEOUT_S = 600.0
 
@@ -139,6 +140,8 @@ class Watch:
                     f"{x:.4f}",
                     f"{y:.4f}",
                     f"{z:.4f}",
+                    int(c.outputs.spindle_on),
+                    c.cycle.step.name.lower() if c.cycle is not None else "",
                 ]
             )
 
@@ -178,6 +181,7 @@ class CycleReport:
     tilt_b_deg: float | None = None
     target_width_mm: float | None = None  # the width it was cut to when narrower than the board
     passes: int | None = None
+    resume: str = ""  # with --resume: what became of the interrupted board, in words
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -207,6 +211,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         type=Path,
         metavar="FILE.csv",
         help="write commanded and actual positions at every period",
+    )
+    parser.add_argument(
+        "--resume",
+        action="store_true",
+        help="with --inject: after the alarm clear the fault, Reset, then Resume the "
+        "interrupted board (as an operator would)",
     )
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--realtime", action="store_true", help="run at real-time speed")
@@ -294,8 +304,45 @@ def _tick_pacing(runtime: MachineRuntime, realtime: bool) -> Iterator[None]:
         runtime.on_tick.remove(pace)
 
 
+def _reset_and_resume(runtime: MachineRuntime, report: CycleReport, watch: Watch) -> None:
+    """The operator's gestures after an interruption: the cause removed, Reset, Resume."""
+    c = runtime.controller
+    faults = runtime.backend.extras.get("faults")
+    if isinstance(faults, FaultInjector):
+        faults.clear_injections()
+    watch.operator_acted = True
+    runtime.run_for(0.5)
+    c.post(cmd.Reset())
+    if not runtime.run_until(lambda m: m.state not in LATCHED_STATES, RESET_TIMEOUT_S):
+        report.resume = f"reset refused: {c.message}"
+        return
+    if c.interrupted is None:
+        report.resume = "nothing to resume: the cut had not begun"
+        return
+    runtime.run_for(1.0)  # the operator reads the screen; the axes have stopped
+    c.post(cmd.Resume())
+    runtime.run_for(2 * runtime.period_s)
+    if c.cycle is None:
+        report.resume = f"resume refused: {c.message}"
+        return
+    if not runtime.run_until(
+        lambda m: m.state is not MachineState.AUTOMATIC or m.cycle is None, CYCLE_TIMEOUT_S
+    ):
+        raise RuntimeError(f"resumed cycle did not end within {CYCLE_TIMEOUT_S:.0f} s")
+    piece = c.finished_cycles[-1][0] if c.finished_cycles else None
+    if c.state is MachineState.READY and piece is not None and piece.resumed:
+        report.result = "resumed"
+        report.resume = "resumed and finished"
+    else:
+        report.resume = f"resumed cycle ended in {c.state.value}: {c.message}"
+
+
 def _run_cycle(
-    runtime: MachineRuntime, width_mm: float | None, injection: Injection | None, watch: Watch
+    runtime: MachineRuntime,
+    width_mm: float | None,
+    injection: Injection | None,
+    watch: Watch,
+    resume: bool = False,
 ) -> CycleReport:
     """One board through the machine (``width_mm`` None: drawn from the simulation's)."""
     c = runtime.controller
@@ -334,6 +381,8 @@ def _run_cycle(
         runtime.run_for(SETTLE_AFTER_ALARM_S)
         report.result = "alarm"
     report.alarms = sorted({a.code for a in c.alarms.views() if a.alarm_id not in alarms_before})
+    if resume and report.result == "alarm":
+        _reset_and_resume(runtime, report, watch)
     if c.finished_cycles:
         piece, cycle = c.finished_cycles[-1]
         o = cycle.outcome
@@ -381,6 +430,8 @@ def simulate(
     args: argparse.Namespace, config: MachineConfig, db_path: Path, out: TextIO
 ) -> dict[str, Any]:
     injection = Injection.parse(args.inject) if args.inject is not None else None
+    if args.resume and injection is None:
+        raise UsageError("--resume is not allowed without --inject: there is nothing to resume")
     widths = _barrel_widths(args)
     if args.width is None and not args.barrel:
         raise UsageError("--width is missing: the width of every board in mm (or --barrel)")
@@ -403,7 +454,18 @@ def simulate(
         if trace_file is not None:
             watch.trace = csv.writer(trace_file)
             watch.trace.writerow(
-                ["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act", "z_act"]
+                [
+                    "t_s",
+                    "state",
+                    "x_cmd",
+                    "y_cmd",
+                    "z_cmd",
+                    "x_act",
+                    "y_act",
+                    "z_act",
+                    "spindle",
+                    "step",
+                ]
             )
         runtime.on_tick.append(watch.observe)
         runtime.start()
@@ -421,13 +483,15 @@ def simulate(
             if args.barrel:
                 reports = _raise_barrel(runtime, args.width, widths, watch, out, args.json)
             for _ in range(0 if args.barrel else args.cycles):
-                report = _run_cycle(runtime, args.width, injection, watch)
+                report = _run_cycle(runtime, args.width, injection, watch, args.resume)
                 reports.append(report)
                 if not args.json:
                     print(_describe(report), file=out)
                     if report.injection:
                         print(f"injected {report.injection}", file=out)
-                if report.result != "ok":
+                    if report.resume:
+                        print(f"resume: {report.resume}", file=out)
+                if report.result not in ("ok", "resumed"):
                     break
         c = runtime.controller
         params = c.params
@@ -562,6 +626,7 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
         "result": r.result,
         "alarms": r.alarms,
         "injection": r.injection or None,
+        "resume": r.resume or None,
         **(
             {}
             if r.passes is None
@@ -577,6 +642,8 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
 
 
 def _describe(r: CycleReport) -> str:
+    if r.result == "resumed":
+        return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms)}, then resumed"
     if r.result != "ok":
         return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms) or '(none)'}"
     return (

@@ -175,6 +175,8 @@ class Shutdown:
 
 Command = (
     Start
+    | Resume
+    | Abandon
     | Stop
     | Reset
     | Home

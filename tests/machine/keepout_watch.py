@@ -53,7 +53,10 @@ class KeepOutWatch:
         if self.toolpath is None and c.cycle is not None and c.cycle.planned is not None:
             self.toolpath = c.cycle.planned.toolpath
         x, y, z = (c.axes.command[n] for n in ("X", "Y", "Z"))
-        spindle = c.outputs.spindle_on
+        self.check(runtime.time_s, c.state.value, x, y, z, c.outputs.spindle_on)
+
+    def check(self, t_s: float, label: str, x: float, y: float, z: float, spindle: bool) -> None:
+        """One period: the commanded pivot (x, y), tilt z and the spindle output."""
         self.periods += 1
         if self._touches(x, y, z):
             self.touching_periods += 1
@@ -61,12 +64,12 @@ class KeepOutWatch:
             self.max_touching_off_path_mm = max(self.max_touching_off_path_mm, off)
             if off > ON_PATH_MM:
                 self.violations.append(
-                    f"t {runtime.time_s:.3f} s {c.state.value}: X {x:.2f} Y {y:.2f} Z {z:.2f} "
+                    f"t {t_s:.3f} s {label}: X {x:.2f} Y {y:.2f} Z {z:.2f} "
                     f"touches the board {off:.2f} mm off the tool path (spindle {spindle})"
                 )
         if spindle and not self._spindle_was_on and self._touches(x, y, z):
             self.violations.append(
-                f"t {runtime.time_s:.3f} s: spindle switched on with the cutter on the board "
+                f"t {t_s:.3f} s: spindle switched on with the cutter on the board "
                 f"at X {x:.2f} Y {y:.2f}"
             )
         self._spindle_was_on = spindle

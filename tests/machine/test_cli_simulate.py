@@ -59,7 +59,10 @@ def test_json_for_two_cycles_and_a_trace(capsys, tmp_path: Path) -> None:
         assert 0.0 < cycle["max_contour_error_mm"] < 0.1
     with trace.open() as f:
         rows = list(csv.reader(f))
-    assert rows[0] == ["t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act", "z_act"]
+    assert rows[0] == [
+        *("t_s", "state", "x_cmd", "y_cmd", "z_cmd", "x_act", "y_act", "z_act"),
+        *("spindle", "step"),
+    ]
     times = [float(r[0]) for r in rows[1:]]
     assert times == sorted(times) and len(times) > 10_000
     assert {r[1] for r in rows[1:]} >= {"homing", "ready", "automatic"}
@@ -133,3 +136,60 @@ def test_console_script_runs_without_traceback(tmp_path: Path) -> None:
     )
     assert result.returncode == 2
     assert "Traceback" not in result.stderr and "--recipe-file" in result.stderr
+
+
+@pytest.mark.parametrize("injection", ["spindle@cutting_b", "estop@repositioning"])
+def test_inject_then_resume_never_crosses_the_board_in_the_trace(
+    capsys, tmp_path: Path, injection: str
+) -> None:
+    """Checked from outside: the trace's commanded positions and spindle output against the
+    board (from the JSON's parameters) and the tool path of the measured width."""
+    from app.config import load_config
+    from app.data.database import Database
+    from app.machine.cycle_plan import plan_board
+    from app.machine.process_params import motion_limits, stave_limits
+    from tests.machine.keepout_watch import KeepOutWatch
+
+    trace = tmp_path / "trace.csv"
+    db = tmp_path / "sim.db"
+    code, out, err = simulate(
+        capsys,
+        *("--recipe", BARRIQUE, "--width", "150", "--inject", injection, "--resume"),
+        *("--json", "--trace", str(trace), "--db", str(db)),
+    )
+    assert code == 0, err
+    result = json.loads(out)
+    cycle = result["cycles"][0]
+    assert cycle["result"] == "resumed" and cycle["resume"] == "resumed and finished"
+    assert result["pieces"] == 1
+    config = load_config()
+    with Database.open(db) as database:
+        params = database.get_parameters()
+        recipe = database.get_recipe_by_name(BARRIQUE)
+    assert recipe is not None
+    planned = plan_board(
+        recipe,
+        cycle["measured_width_mm"],
+        params,
+        stave_limits(config),
+        motion_limits(config, params),
+        (params["home_x_mm"], params["home_y_mm"], params["home_z_deg"]),
+    )
+    watch = KeepOutWatch(dict(params), recipe.length_mm, 150.0, planned.toolpath)
+    with trace.open(encoding="utf-8") as f:
+        for row in csv.DictReader(f):
+            watch.check(
+                float(row["t_s"]),
+                row["step"] or row["state"],
+                float(row["x_cmd"]),
+                float(row["y_cmd"]),
+                float(row["z_cmd"]),
+                row["spindle"] == "1",
+            )
+    assert watch.touching_periods > 1000, "the trace holds the cut"
+    assert watch.violations == []
+
+
+def test_resume_needs_an_injection(capsys) -> None:
+    code, _, err = simulate(capsys, "--recipe", BARRIQUE, "--width", "150", "--resume")
+    assert code == 2 and "--resume is not allowed without --inject" in err
