@@ -43,11 +43,13 @@ from app.machine.barrel_set import BarrelSet, BoardChoice
 from app.machine.board_resume import continue_job, interruption
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
 from app.machine.cycle_plan import PlannedStave, plan_board
-from app.machine.executor import ViolationKind, check_feedback
+from app.machine.executor import PathExecutor, ViolationKind, check_feedback
 from app.machine.homing import HomingFailed, HomingSequence
+from app.machine.homing_clearance import homing_clearance
 from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
+from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.planner.trajectory import Phase
 from app.machine.preview import build_preview, recipe_preview
 from app.machine.process_params import motion_limits, stave_limits
@@ -364,9 +366,31 @@ class MachineController:
         self._reset_faults_sent = False
 
     def _on_Home(self, c: cmd.Home) -> None:
-        self.homing = HomingSequence.for_axes(c.axis, self.config.axes, self.now_s)
+        homing = HomingSequence.for_axes(c.axis, self.config.axes, self.now_s)
+        if self.inputs.part_present or self.inputs.clamps_closed:
+            try:
+                clearance = homing_clearance(
+                    self.axes.positions(),
+                    self._table_keep_out(),
+                    self.config.axes,
+                    motion_limits(self.config, self.params),
+                    tuple(homing.axes_to_home),
+                )
+            except KeepOutRefused as exc:
+                self._refuse(str(exc))
+                return
+            if clearance is not None:
+                homing.clearance = PathExecutor(clearance, self.config.period_s)
+                self.message = "a board is on the table: moving clear of it before homing"
+        self.homing = homing
         if self.state is not MachineState.MANUAL:
             self._transition(Event.HOME)
+
+    def _table_keep_out(self) -> TableKeepOut:
+        """The board on the table as far as it is known: the widest the table takes, of the
+        selected recipe's length."""
+        length = self.recipe.length_mm if self.recipe is not None else None
+        return TableKeepOut.largest_board(self.params, stave_limits(self.config), length)
 
     def _on_SelectRecipe(self, c: cmd.SelectRecipe) -> None:
         recipe = self.store.recipe(c.recipe_id)

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 from app.config import AxisConfig
 from app.machine.axes import AxisGroup
+from app.machine.executor import PathExecutor
 
 HOMING_ORDER: tuple[str, ...] = ("Z", "Y", "X")
 
@@ -40,6 +41,8 @@ class HomingSequence:
     _phase_started_s: float = 0.0
     done: bool = False
     log: list[str] = field(default_factory=list)
+    # With a board on the table: the move clear of it (spindle off) that comes first.
+    clearance: PathExecutor | None = None
 
     @classmethod
     def for_axes(cls, axis: str, configs: Mapping[str, AxisConfig], now_s: float) -> HomingSequence:
@@ -54,9 +57,25 @@ class HomingSequence:
         self._phase = phase
         self._phase_started_s = now_s
 
+    def _clear(self, now_s: float, axes: AxisGroup) -> None:
+        assert self.clearance is not None
+        if not axes.request_enable():
+            if now_s - self._phase_started_s > 2.0:
+                raise HomingFailed(self.current_axis, "drives did not enable within 2 s")
+            return
+        out = self.clearance.step()
+        axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
+        if out.done:
+            self.log.append(f"moved clear of the board to X {out.x:.1f} Y {out.y:.1f}")
+            self.clearance = None
+            self._next_phase("enable", now_s)
+
     def tick(self, now_s: float, axes: AxisGroup) -> None:
         """Advance; raises HomingFailed on a timeout or a drive that refuses."""
         if self.done:
+            return
+        if self.clearance is not None:
+            self._clear(now_s, axes)
             return
         name = self.current_axis
         feedback = axes.feedback[name]
