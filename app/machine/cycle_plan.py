@@ -18,6 +18,7 @@ from app.geometry.errors import FieldError
 from app.geometry.limits import StaveLimits
 from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, StaveSpec, cut_stave
 from app.geometry.toolpath import ToolPath
+from app.geometry.width_range import cuttable_widths
 from app.machine.barrel_set import NextStave
 from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.limits import MotionLimits
@@ -73,13 +74,20 @@ def plan_board(
     E051 (the planner failed), E052 (the approach would cross the board), never anything
     else. ``stave`` replaces the recipe's (a barrel's stave: its place's bevels, a target
     width)."""
+    spec = recipe.stave if stave is None else stave
     try:
-        cut = cut_stave(recipe.stave if stave is None else stave, width_mm, params, stave_limits)
+        cut = cut_stave(spec, width_mm, params, stave_limits)
     except StaveCutRefused as exc:
         code = "E050" if exc.stage is CutStage.TRAVEL else "E032"
         message = "; ".join(e.message for e in exc.errors)
         if exc.stage is CutStage.TILT:
             message = f"width {width_mm:.2f} mm: {message}"
+        # One alarm the operator can act on: the measured width and the recipe's bound.
+        widths = cuttable_widths(spec, params, stave_limits)
+        if widths is None:
+            code, message = "E032", f"this recipe cuts no board on this machine ({message})"
+        elif not widths.contains(width_mm):
+            code, message = "E032", widths.refusal(width_mm)
         raise PlanningError(code, message, exc.errors) from exc
     try:
         plan = plan_stave(cut.toolpath, start_xyz, motion_limits)

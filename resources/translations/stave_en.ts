@@ -1171,7 +1171,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+341" />
+        <location filename="../../app/screens/recipes_screen.py" line="+346" />
         <location line="+73" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -1329,18 +1329,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+474" />
+        <location line="+495" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-473" />
-        <location line="+523" />
+        <location line="-494" />
+        <location line="+544" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-522" />
+        <location line="-543" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1434,12 +1434,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+157" />
+        <location line="+178" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-155" />
+        <location line="-176" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -1454,7 +1454,22 @@ shift</translation>
         <translation>Import a DXF file…</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+84" />
+        <source>This recipe cuts no board on this machine</source>
+        <translation>This recipe cuts no board on this machine</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Boards it cuts on this machine: %1 to %2 mm</source>
+        <translation>Boards it cuts on this machine: %1 to %2 mm</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Outside the widths this recipe cuts on this machine</source>
+        <translation>Outside the widths this recipe cuts on this machine</translation>
+    </message>
+    <message>
+        <location line="+27" />
         <source>Not saved</source>
         <translation>Not saved</translation>
     </message>

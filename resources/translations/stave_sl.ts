@@ -63,7 +63,7 @@
     <message>
         <location line="+1"/>
         <source>Board too narrow to close the barrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Deska je preozka za zaprtje soda</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1171,7 +1171,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+341"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+346"/>
         <location line="+73"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
@@ -1329,18 +1329,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+474"/>
+        <location line="+495"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-473"/>
-        <location line="+523"/>
+        <location line="-494"/>
+        <location line="+544"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-522"/>
+        <location line="-543"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1434,12 +1434,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+157"/>
+        <location line="+178"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="-176"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -1454,7 +1454,22 @@ izmena</translation>
         <translation>Uvozi datoteko DXF…</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+84"/>
+        <source>This recipe cuts no board on this machine</source>
+        <translation>Ta recept na tem stroju ne reže nobene deske</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Boards it cuts on this machine: %1 to %2 mm</source>
+        <translation>Deske, ki jih reže na tem stroju: %1 do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Outside the widths this recipe cuts on this machine</source>
+        <translation>Zunaj širin, ki jih ta recept reže na tem stroju</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>

@@ -32,7 +32,7 @@ degrees for Z):
   quick-stop ramp, and the safety relay removes torque (STO) at standstill or after this time.
 - ``board_present`` (bool, default false): a board lies on the table at power-up.
 - ``board_width_mean_mm``, ``board_width_sd_mm``, ``board_width_min_mm``,
-  ``board_width_max_mm`` (defaults 170, 30, 100, 270): the true width of a board put on the
+  ``board_width_max_mm`` (defaults 140, 15, 100, 175): the true width of a board put on the
   table without a width, a normal distribution cut to [min, max].
 - ``auto_load`` (bool, default false): a simulated operator keeps the machine fed (demos,
   ``stave simulate``): a board at power-up, the finished board taken away and a new one put
@@ -46,8 +46,8 @@ degrees for Z):
 - ``measurement_time_s`` (default 0.3): time from ``request()`` to the reading.
 - ``out_of_range_mm`` (default 999.0): what the gauge answers when ``gauge_out_of_range`` is
   injected.
-- ``width_mean_mm``, ``width_sd_mm``, ``width_min_mm``, ``width_max_mm`` (defaults 170, 30,
-  100, 270): the true widths the gauge measures when there is no simulated world (a gauge
+- ``width_mean_mm``, ``width_sd_mm``, ``width_min_mm``, ``width_max_mm`` (defaults 140, 15,
+  100, 175): the true widths the gauge measures when there is no simulated world (a gauge
   used beside a real machine backend); with the simulated machine it measures the board on
   the table.
 """
@@ -67,10 +67,12 @@ from app.config import AxisConfig, ConfigError
 class WidthDistribution:
     """True widths of boards: normal, cut to [min_mm, max_mm]."""
 
-    mean_mm: float = 170.0
-    sd_mm: float = 30.0
+    # Widths every shipped sample recipe cuts on the shipped machine (the narrowest range is
+    # Barrique 225 l's, to 178.6 mm: its bevel from the belly reaches the tilt axis's 15 deg).
+    mean_mm: float = 140.0
+    sd_mm: float = 15.0
     min_mm: float = 100.0
-    max_mm: float = 270.0
+    max_mm: float = 175.0
 
     def draw(self, rng: random.Random) -> float:
         """One width; redraws outside the bounds (a cut normal), clamps after 100 tries."""

@@ -85,7 +85,7 @@ def test_the_commented_options_in_machine_toml_are_all_the_options_and_valid() -
         (
             {"board_width_mean_mm": 300.0},
             "backend.sim.board_width_mean_mm",
-            "from board_width_min_mm (100) to board_width_max_mm (270)",
+            "from board_width_min_mm (100) to board_width_max_mm (175)",
         ),
         ({"operator_delay_s": -1.0}, "backend.sim.operator_delay_s", ">= 0"),
     ],
