@@ -200,7 +200,7 @@ def test_width_out_of_range_is_refused_before_cutting(ready_rig: Rig) -> None:
     rig.send(cmd.Start())
     rig.until(lambda c: c.state is MachineState.ERROR, 30.0)
     alarm = next(a for a in rig.controller.snapshot().alarms if a.code == "E032")
-    assert "280" in alarm.text
+    assert "board 295.0 mm" in alarm.text and "at most 178.6 mm" in alarm.text
     assert rig.controller.finished_cycles[-1][0].result == "rejected"
 
 
