@@ -238,8 +238,17 @@ class AlarmsScreen(Screen):
         table.resizeRowsToContents()
 
     def ack_button(self, alarm_id: int) -> QPushButton | None:
-        """The Acknowledge button of one active alarm (None when it needs none)."""
-        return self.active_table.findChild(QPushButton, f"ack_{alarm_id}")
+        """The Acknowledge button shown for one active alarm (None when it needs none).
+
+        Looked up in the table's cells, not among its children: a button the table has just
+        replaced stays a child until Qt deletes it later, and it must not count as shown.
+        """
+        table = self.active_table
+        for row in range(table.rowCount()):
+            widget = table.cellWidget(row, 5)
+            if isinstance(widget, QPushButton) and widget.objectName() == f"ack_{alarm_id}":
+                return widget
+        return None
 
     # -- history -------------------------------------------------------------------------------
 

@@ -3,6 +3,8 @@ directions, with reversal at the limit switch; incremental and absolute encoders
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from app.drivers.cia402 import Cia402State, OperationMode
@@ -151,19 +153,16 @@ def test_targets_are_ignored_while_homing_and_followed_after() -> None:
 
 
 def test_homing_fails_with_a_fault_when_no_switch_is_found() -> None:
-    # The switch sits beyond the negative limit switch: the search reverses there and runs
-    # to the positive limit switch without ever seeing it.
-    axes = {
-        "X": {
-            "max_position": 150.0,
-            "home_switch_position": -40.0,
-            "homing_direction": -1,
-            "homing_velocity": 40.0,
-        }
-    }
+    # The configuration is valid (the switch within the travel), but on the machine the cam
+    # has been moved beyond the negative limit switch: the search reverses there and runs to
+    # the positive limit switch without ever seeing it. (A configuration that puts the switch
+    # there is refused before anything runs: see tests/test_config_hardening.py.)
+    axes = {"X": {"max_position": 150.0, "homing_direction": -1, "homing_velocity": 40.0}}
     rig = Rig(
         make_config({"start_position": {"X": 100.0}, "home_switch_width": {"X": 5.0}}, axes=axes)
     )
+    drive = rig.world.drives["X"]
+    drive.params = replace(drive.params, home_cam_low=-45.0, home_cam_high=-40.0)
     record = home(rig)
     fb = rig.fb("X")
     assert fb.faulted and fb.fault_code == 0xFF03
