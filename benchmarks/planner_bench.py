@@ -22,6 +22,10 @@ default machine configuration (feed 120 mm/s; X 400 mm/s, 2000 mm/s^2, 20000 mm/
   them while cutting (target 0.001 mm), and of the actual positions of the simulated drives
   (app.drivers.sim: CiA 402 drives, PI position loop, friction) fed with that stream
   (target 0.01 mm), on the board (P1..P4, P5..P8) and over the whole cut (leads included).
+* per side-profile family (line-arc-line, single arc, parabola, ellipse arc, superellipse,
+  the shipped drawn profile) on one stave: the same cut ratios, the number of lines and arcs
+  cut per side, and the largest jerk ratio between the arcs of a fitted curve (the planner
+  keeps it <= 1; only where a line meets an arc is the jerk a declared step).
 * planning time of a whole stave (target 200 ms): plan_stave alone, median of 10.
 * executor lateness p50/p99/max over --lateness-s seconds at 4 ms, the machine process
   alone and with the operator application plotting live (see :func:`measure_lateness`).
@@ -46,7 +50,9 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from app.config import MachineConfig, parse_config  # noqa: E402
+from app.geometry.curved_profile import ProfileSpec  # noqa: E402
 from app.geometry.profile import solve_profile  # noqa: E402
+from app.geometry.profile_kinds import ProfileKind  # noqa: E402
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath  # noqa: E402
 from app.machine.executor import ExecutorOutput, PathExecutor  # noqa: E402
 from app.machine.planner.chunk import path_box  # noqa: E402
@@ -83,9 +89,9 @@ REFERENCE_STAVES = (
 )
 
 
-def toolpath_for(stave: Stave, config: MachineConfig) -> ToolPath:
+def _params(stave: Stave, config: MachineConfig) -> ToolPathParams:
     p = config.process
-    params = ToolPathParams(
+    return ToolPathParams(
         tool_radius_mm=p.tool_radius_mm,
         machine_height_mm=p.machine_height_mm,
         tilt_deg=stave.tilt_deg,
@@ -97,8 +103,70 @@ def toolpath_for(stave: Stave, config: MachineConfig) -> ToolPath:
         home_z_deg=config.axes["Z"].home_position,
         tilt_clearance_mm=p.tilt_clearance_mm,
     )
+
+
+FAMILY_STAVE = Stave(1000.0, 150.0, 0.25, 0.75, 10.0)
+FAMILIES: tuple[tuple[str, ProfileSpec], ...] = (
+    ("line-arc-line 1/4", ProfileSpec()),
+    ("single arc", ProfileSpec(ProfileKind.SINGLE_ARC)),
+    ("parabola", ProfileSpec(ProfileKind.PARABOLA)),
+    ("ellipse arc s=1.2", ProfileSpec(ProfileKind.ELLIPSE, (("semi_axis_ratio", 1.2),))),
+    (
+        "superellipse n=4 s=1.2",
+        ProfileSpec(ProfileKind.SUPERELLIPSE, (("exponent", 4.0), ("semi_axis_ratio", 1.2))),
+    ),
+    (
+        "superellipse n=10 s=1.05",
+        ProfileSpec(ProfileKind.SUPERELLIPSE, (("exponent", 10.0), ("semi_axis_ratio", 1.05))),
+    ),
+)
+
+
+def family_rows(config: MachineConfig, limits: MotionLimits) -> list[dict[str, Any]]:
+    """The cut ratios of every profile family on FAMILY_STAVE (planning only)."""
+    from app.data.dxf_profile import read_dxf_profile
+
+    sample = ROOT / "resources" / "profiles" / "sample_side_profile.dxf"
+    drawn = read_dxf_profile(sample.name, sample.read_bytes()).shape
+    families = (*FAMILIES, ("drawn (sample DXF)", ProfileSpec(ProfileKind.DRAWN, drawn=drawn)))
+    s = FAMILY_STAVE
+    rows = []
+    for name, spec in families:
+        profile = spec.solve(s.length_mm, s.width_mm, s.width_ratio, s.length_ratio)
+        toolpath = build_toolpath(profile, _params(s, config))
+        start = (toolpath.params.home_x_mm, toolpath.params.home_y_mm, toolpath.params.home_z_deg)
+        plan = plan_stave(toolpath, start, limits)
+        xyz = plan.setpoints(PERIOD_S)[:, 1:]
+        _, _, jerk, _, _ = stream_ratios(plan, xyz, limits)
+        rows.append(
+            {
+                "family": name,
+                "pieces": len(profile.edge("A")),
+                "ratio_a": cut_ratios(plan, limits, "A"),
+                "ratio_b": cut_ratios(plan, limits, "B"),
+                "jerk": jerk,
+            }
+        )
+    return rows
+
+
+def print_family_table(rows: list[dict[str, Any]]) -> None:
+    s = FAMILY_STAVE
+    print(
+        f"\nCut time per side-profile family ({s.length_mm:.0f} x {s.width_mm:.0f} mm, "
+        f"k = {s.width_ratio:g}, tilt {s.tilt_deg:g} deg), against length/feed + feed/accel"
+    )
+    print(f"{'family':28} {'pieces':>6} {'A/bound':>8} {'B/bound':>8} {'A/jerk':>7} {'j/limit':>8}")
+    for r in rows:
+        print(
+            f"{r['family']:28} {r['pieces']:6d} {r['ratio_a'][0]:8.4f} {r['ratio_b'][0]:8.4f} "
+            f"{r['ratio_a'][1]:7.4f} {r['jerk']:8.3f}"
+        )
+
+
+def toolpath_for(stave: Stave, config: MachineConfig) -> ToolPath:
     profile = solve_profile(stave.length_mm, stave.width_mm, stave.length_ratio, stave.width_ratio)
-    return build_toolpath(profile, params)
+    return build_toolpath(profile, _params(stave, config))
 
 
 # -- figures of one stave -------------------------------------------------------------------
@@ -475,10 +543,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--no-sim", action="store_true", help="skip the simulated drives (actual path figure)"
     )
+    parser.add_argument(
+        "--families-only", action="store_true", help="only the side-profile family table"
+    )
     args = parser.parse_args(argv)
 
     config = parse_config({})
     limits = MotionLimits.from_axes(config.axes, config.process.feed_mm_s)
+    if args.families_only:
+        print_family_table(family_rows(config, limits))
+        return 0
     rows = []
     for stave in REFERENCE_STAVES:
         figures = stave_figures(stave, config, limits, simulate=not args.no_sim)
@@ -486,6 +560,7 @@ def main(argv: list[str] | None = None) -> int:
         rows.append(figures)
         print(f"  planned and ran {stave.label}", file=sys.stderr)
     print_stave_tables(rows)
+    print_family_table(family_rows(config, limits))
 
     print("\nExecutor lateness at 4 ms (machine process on the simulation)")
     if args.lateness_s <= 0:
