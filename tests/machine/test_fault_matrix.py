@@ -6,6 +6,7 @@ Axes have absolute encoders here so that no case spends time homing."""
 
 from __future__ import annotations
 
+import uuid
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import replace
@@ -18,10 +19,13 @@ from app.drivers.modbus.emulator import ModbusEmulator
 from app.drivers.sim.faults import SimFaultInjector
 from app.drivers.sim.gauge import SimGauge
 from app.drivers.sim.settings import parse_gauge_settings
+from app.drivers.sim.world import SimWorld
 from app.machine import commands as cmd
 from app.machine.database_store import open_store
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState
+from tests.drivers.canopen import conftest as can_rig
+from tests.drivers.canopen.world_nodes import WorldBus
 from tests.drivers.modbus.helpers import tcp_modbus
 from tests.machine.conftest import Rig, make_rig
 
@@ -79,6 +83,8 @@ MODBUS_PAIRS: tuple[tuple[str, str, CycleStep], ...] = (
     ("spindle", "", S.CUTTING_B),
 )
 MODBUS_CASES = [case for case in CASES if case[:3] in MODBUS_PAIRS]
+# CANopen runs its heartbeats and TPDO waits in real time: the same pairs as Modbus.
+CANOPEN_CASES = MODBUS_CASES
 
 
 @pytest.fixture(scope="module")
@@ -129,6 +135,45 @@ def modbus_rig(config: MachineConfig, tmp_path: Path) -> Iterator[Rig]:
         emulator.stop()
 
 
+@contextmanager
+def canopen_rig(config: MachineConfig, tmp_path: Path) -> Iterator[Rig]:
+    """The same machine behind the CANopen backend: the world's drives and I/O as CANopen
+    nodes on python-can's virtual bus (a channel of this test's own)."""
+    channel = f"stave-matrix-{uuid.uuid4().hex[:12]}"
+    settings = can_rig.canopen_settings(
+        channel, heartbeat_ms=100, heartbeat_timeout_ms=1000, master_heartbeat_timeout_ms=1000
+    )
+    machine = replace(
+        config,
+        backend="canopen",
+        backend_settings={**config.backend_settings, "canopen": settings},
+        period_s=0.01,
+    )
+    world = SimWorld.from_config(machine)
+    bus = WorldBus(
+        world,
+        channel,
+        can_rig.NODE_IDS,
+        can_rig.COUNTS,
+        can_rig.IO_NODE,
+        can_rig.INPUT_BITS,
+        can_rig.OUTPUT_BITS,
+    )
+    runtime: MachineRuntime | None = None
+    try:
+        gauge = SimGauge(parse_gauge_settings({}), world, machine.period_s)
+        gauge.configure()
+        store = open_store(tmp_path / "stave.db", machine, threaded=False)
+        runtime = MachineRuntime(machine, store, gauge=gauge)
+        runtime.on_tick.append(lambda rt: bus.follow_clock(rt.time_s))
+        runtime.start()
+        yield Rig(runtime, world, SimFaultInjector(world))
+    finally:
+        if runtime is not None:
+            runtime.shutdown()
+        bus.close()
+
+
 @pytest.mark.parametrize(
     ("kind", "target", "step", "code", "latched"),
     CASES,
@@ -166,6 +211,24 @@ def test_fault_at_step_on_modbus(
         run_case(rig, kind, target, step, code, latched)
 
 
+@pytest.mark.parametrize(
+    ("kind", "target", "step", "code", "latched"),
+    CANOPEN_CASES,
+    ids=[f"{k}:{t}@{s.name.lower()}" for k, t, s, _c, _l in CANOPEN_CASES],
+)
+def test_fault_at_step_on_canopen(
+    kind: str,
+    target: str,
+    step: CycleStep,
+    code: str,
+    latched: MachineState,
+    absolute_config,
+    tmp_path: Path,
+) -> None:
+    with canopen_rig(absolute_config, tmp_path) as rig:
+        run_case(rig, kind, target, step, code, latched)
+
+
 def run_case(
     rig: Rig, kind: str, target: str, step: CycleStep, code: str, latched: MachineState
 ) -> None:
@@ -179,9 +242,11 @@ def run_case(
     rig.faults.inject(kind, target)
     rig.until(lambda c: c.state in LATCHED_STATES, 30.0)
     assert rig.state is latched
+    rig.run(3.0)  # stopping ramps end (and a lost link's watchdogs act)
+    # The right alarm, once every backend's feedback is in (CANopen's slow TPDO brings the
+    # limit switch bits a few SYNCs after the fault's statusword).
     codes = {a.code for a in rig.controller.snapshot().alarms}
     assert code in codes, f"expected {code}, got {codes}"
-    rig.run(3.0)  # stopping ramps end (and a lost link's watchdogs act)
     assert not rig.world.outputs.spindle_on
     still = rig.positions()
     rig.run(3.0)

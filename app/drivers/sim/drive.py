@@ -434,6 +434,12 @@ class SimDrive:
         self._link_ok = ok
         self._check_unusual()
 
+    def heartbeat_lost(self) -> None:
+        """The drive's own watch of the controller (a CANopen heartbeat consumer, 0x1016)
+        timed out: a powered drive faults with 0x8130, as on a lost link."""
+        if self._state in _POWERED:
+            self._fault(EmcyCode.HEARTBEAT, ramp=True)
+
     def inject_power_stage_fault(self, active: bool) -> None:
         self._hold_fault = active
         self._check_unusual()

@@ -1,0 +1,202 @@
+"""The simulated world seen through CANopen: drive and I/O nodes whose devices are the
+world's (``app.drivers.sim``), as ``app.drivers.modbus.emulation`` is for Modbus.
+
+Why a view and not another model: the CiA 402 drives of :mod:`app.drivers.sim.drive` (power
+state machine on the controlword, CSP with finite acceleration, homing on a switch, fault
+codes, limit switches, safe torque off), the pneumatics, the spindle, the board and the
+E-stop chain are the machine the simulation backend and the Modbus emulator drive; the
+CANopen backend meets exactly that machine here, only through SDOs, PDOs, EMCY and
+heartbeats (the node infrastructure of :mod:`tests.drivers.canopen.sim_drive`). So the fault
+matrix injects the same faults into the same world on every backend.
+
+Time: the X drive is the world's clock: at every SYNC, before any node samples its TPDOs,
+the world advances by one period. While the bus is silent (a lost link, after which the
+backend sends no SYNC) :meth:`WorldBus.follow_clock` lets world time pass so that the
+drives' and the I/O's watchdogs act, as on the machine. A link the world cuts (a comms_loss
+injected) silences its nodes: no PDO, no heartbeat.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Mapping
+
+from app.drivers.canopen import objects as obj
+from app.drivers.cia402 import OperationMode
+from app.drivers.contracts import OutputImage
+from app.drivers.sim.drive import SimDrive
+from app.drivers.sim.world import SimWorld
+from tests.drivers.canopen.sim_drive import SimIoNode, SimNetwork, SimNode
+
+_MODES = {int(mode): mode for mode in OperationMode}
+# RPDO1 carries controlword, target, mode; a drive applies the mode first (it decides what
+# controlword bit 4 means), then the controlword, then the target.
+_APPLY_ORDER = (obj.MODES_OF_OPERATION, obj.CONTROLWORD, obj.TARGET_POSITION)
+
+
+class WorldBus:
+    """The world, its lock (the bus's notifier thread and the test's thread both touch it)
+    and the nodes that show it on one virtual CAN channel."""
+
+    def __init__(
+        self,
+        world: SimWorld,
+        channel: str,
+        node_ids: Mapping[str, int],
+        counts_per_unit: Mapping[str, float],
+        io_node: int,
+        input_bits: Mapping[str, int],
+        output_bits: Mapping[str, int],
+    ) -> None:
+        self.world = world
+        self.lock = threading.RLock()
+        self.network = SimNetwork(channel)
+        self.drives = {
+            name: WorldDrive(self, node, world.drives[name], counts_per_unit[name])
+            for name, node in node_ids.items()
+        }
+        self.clock = self.drives[next(iter(node_ids))]
+        self.io = WorldIo(self, io_node, input_bits, output_bits)
+        for node in self.network.nodes:
+            node.boot()
+
+    def follow_clock(self, time_s: float) -> None:
+        """Let world time pass while no SYNC comes (more than two periods behind)."""
+        world = self.world
+        with self.lock:
+            while world.time_s < time_s - 2 * world.period_s:
+                world.advance(world.period_s)
+            self._silence_cut_links()
+
+    def tick(self) -> None:
+        """One SYNC's worth of world time (called by the clock node)."""
+        with self.lock:
+            self.world.advance(self.world.period_s)
+            self._silence_cut_links()
+
+    def _silence_cut_links(self) -> None:
+        for drive in self.drives.values():
+            drive.silence_heartbeat(not self.world.link_ok("drives"))
+        self.io.silence_heartbeat(not self.world.link_ok("io"))
+
+    def close(self) -> None:
+        self.network.close()
+
+
+class WorldDrive(SimNode):
+    """A CiA 402 drive node over one of the world's drives."""
+
+    link = "drives"
+
+    def __init__(self, bus: WorldBus, node_id: int, drive: SimDrive, counts: float) -> None:
+        self.bus = bus
+        self.drive = drive
+        self.counts = counts
+        self._buffer: dict[int, int] | None = None
+        self._emcy_seen = len(bus.world.emcy_log)
+        super().__init__(bus.network, node_id, obj.build_drive_od(node_id))
+
+    def _on_sync(self, can_id: int, data: bytearray, timestamp: float) -> None:
+        if self is self.bus.clock:
+            self.bus.tick()
+        if not self.bus.world.link_ok(self.link):
+            return  # the cut cable: nothing heard, nothing sent
+        with self.bus.lock:
+            super()._on_sync(can_id, data, timestamp)
+
+    def _apply_rpdo(self, number: int, data: bytes) -> None:
+        self._buffer = {}
+        try:
+            super()._apply_rpdo(number, data)
+            values = self._buffer
+        finally:
+            self._buffer = None
+        for index in _APPLY_ORDER:
+            if index in values:
+                self._write(index, values[index])
+
+    def on_write(self, index: int, subindex: int, value: object) -> None:
+        assert isinstance(value, int)
+        if self._buffer is not None:
+            self._buffer[index] = value
+        else:
+            self._write(index, value)
+
+    def _write(self, index: int, value: int) -> None:
+        drive = self.drive
+        if index == obj.CONTROLWORD:
+            drive.write_controlword(value)
+        elif index == obj.TARGET_POSITION:
+            drive.write_target(value / self.counts)
+        elif index == obj.MODES_OF_OPERATION and value in _MODES:
+            drive.set_mode(_MODES[value])
+
+    def on_read(self, index: int, subindex: int) -> int | None:
+        drive = self.drive
+        inputs = (
+            obj.DI_NEGATIVE_LIMIT * drive.limit_negative
+            | obj.DI_POSITIVE_LIMIT * drive.limit_positive
+            | obj.DI_HOME_SWITCH * drive.home_switch
+        )
+        return {
+            obj.STATUSWORD: drive.statusword,
+            obj.POSITION_ACTUAL: round(drive.position * self.counts),
+            obj.MODES_DISPLAY: int(drive.mode),
+            obj.ERROR_CODE: drive.fault_code,
+            obj.DIGITAL_INPUTS: inputs,
+            obj.ERROR_REGISTER: 0x01 if drive.fault_code else 0,
+            obj.CONTROLWORD: drive.controlword,
+        }.get(index)
+
+    def on_sync(self) -> None:
+        """The drive's EMCY messages since the last SYNC go out on the bus."""
+        log = self.bus.world.emcy_log
+        for record in log[self._emcy_seen :]:
+            if record.device == self.drive.name:
+                self.node.emcy.send(record.code, 0x01)
+        self._emcy_seen = len(log)
+
+    def on_heartbeat_event(self) -> None:
+        # No world lock here: the consumer thread holds this node's lock, the bus thread
+        # takes the world's lock first; the drive's reaction is one state change.
+        self.drive.heartbeat_lost()
+
+
+class WorldIo(SimIoNode):
+    """A CiA 401 node over the world's inputs and outputs, wired bit by bit."""
+
+    link = "io"
+
+    def __init__(
+        self,
+        bus: WorldBus,
+        node_id: int,
+        input_bits: Mapping[str, int],
+        output_bits: Mapping[str, int],
+    ) -> None:
+        self.bus = bus
+        self.input_bits = dict(input_bits)
+        self.output_bits = dict(output_bits)
+        super().__init__(bus.network, node_id)
+
+    def _on_sync(self, can_id: int, data: bytearray, timestamp: float) -> None:
+        if not self.bus.world.link_ok(self.link):
+            return
+        with self.bus.lock:
+            super()._on_sync(can_id, data, timestamp)
+
+    def on_read(self, index: int, subindex: int) -> int | None:
+        if index == obj.READ_INPUT_8BIT and subindex >= 1:
+            image = self.bus.world.inputs()
+            self.inputs = sum(
+                1 << bit for name, bit in self.input_bits.items() if getattr(image, name)
+            )
+        return super().on_read(index, subindex)
+
+    def on_write(self, index: int, subindex: int, value: object) -> None:
+        super().on_write(index, subindex, value)
+        if index == obj.WRITE_OUTPUT_8BIT and subindex >= 1:
+            image = OutputImage(
+                **{name: bool(self.outputs >> bit & 1) for name, bit in self.output_bits.items()}
+            )
+            self.bus.world.write_outputs(image)
