@@ -78,20 +78,16 @@ class AxisGroup:
         return False
 
     def quick_stop_all(self) -> None:
+        """Every axis, whatever its state: a backend always takes a quick stop (the safe
+        direction), and an axis still walking to enabled is stopped too."""
         self._enable_requested.clear()
-        for name, fb in self.feedback.items():
-            if fb.enabled:
-                self.motion.quick_stop(name)
+        for name in self.feedback:
+            self.motion.quick_stop(name)
 
     def disable_all(self) -> None:
         self._enable_requested.clear()
-        for name, fb in self.feedback.items():
-            if fb.power_state not in (
-                Cia402State.SWITCH_ON_DISABLED,
-                Cia402State.FAULT,
-                Cia402State.FAULT_REACTION_ACTIVE,
-            ):
-                self.motion.disable(name)
+        for name in self.feedback:
+            self.motion.disable(name)  # always accepted, in every state
 
     def fault_reset_all(self) -> None:
         for name, fb in self.feedback.items():
