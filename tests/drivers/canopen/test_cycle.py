@@ -61,7 +61,9 @@ def test_full_automatic_cycle_on_canopen(channel: str, station: Bench, tmp_path:
     data = machine_data(channel)
     data["backend"]["period_ms"] = PERIOD_MS
     # a long test: a busy CI machine must not starve a heartbeat into a false loss
-    data["backend"]["canopen"].update(heartbeat_ms=100, heartbeat_timeout_ms=1000)
+    data["backend"]["canopen"].update(
+        heartbeat_ms=100, heartbeat_timeout_ms=1000, master_heartbeat_timeout_ms=1000
+    )
     # as the shipped machine.toml: the drives' homing leaves each axis at its home switch
     data["axes"]["X"].update(min_position=-10.0, home_switch_position=-5.0)
     data["axes"]["Y"].update(min_position=-10.0, home_switch_position=-5.0)
