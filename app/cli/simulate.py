@@ -316,7 +316,7 @@ def _reset_and_resume(runtime: MachineRuntime, report: CycleReport, watch: Watch
     if not runtime.run_until(lambda m: m.state not in LATCHED_STATES, RESET_TIMEOUT_S):
         report.resume = f"reset refused: {c.message}"
         return
-    if c.interrupted is None:
+    if c.partly_cut.board is None:
         report.resume = "nothing to resume: the cut had not begun"
         return
     runtime.run_for(1.0)  # the operator reads the screen; the axes have stopped

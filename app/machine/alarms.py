@@ -22,6 +22,41 @@ from dataclasses import dataclass, field
 from app.machine.snapshot import AlarmState, AlarmView
 
 
+class AlarmCode(enum.StrEnum):
+    """Every alarm the machine raises. The values are the codes the database history, the
+    README and the operators know; a StrEnum, so a code is stored and shown as that text."""
+
+    ESTOP = "E001"
+    GUARD_OPEN = "E002"
+    DRIVE_FAULT = "E010"
+    FOLLOWING_ERROR = "E011"
+    LIMIT_SWITCH = "E012"
+    DRIVE_NOT_ENABLED = "E013"
+    DRIVE_DID_NOT_ENABLE = "E014"
+    HOMING_INCOMPLETE = "E015"
+    HOME_LOST = "E016"
+    COMMUNICATION_LOST = "E020"
+    DEVICE_REFUSED = "E021"
+    GAUGE_NO_READING = "E030"
+    GAUGE_UNREADABLE = "E031"
+    WIDTH_NOT_ALLOWED = "E032"
+    GAUGE_DISCONNECTED = "E033"
+    BARREL_NOT_CLOSABLE = "E034"
+    CLAMPS_SENSOR = "E040"
+    CENTERING_SENSOR = "E041"
+    SPINDLE_NOT_STARTED = "E042"
+    SPINDLE_STOPPED = "E043"
+    BOARD_REMOVED = "E044"
+    OUTSIDE_TRAVEL = "E050"
+    PLANNING_FAILED = "E051"
+    APPROACH_CROSSES_BOARD = "E052"
+    INTERNAL_ERROR = "E090"
+    JOG_NOT_REFRESHED = "W101"
+    DEVICE_EVENT = "W102"
+    RECORDS_WAITING = "W103"
+    PIN_LOCKED = "W104"
+
+
 class Severity(enum.Enum):
     FAULT = "fault"  # stops the machine (state ERROR or EMERGENCY_STOP)
     WARNING = "warning"  # informs; the machine keeps going
@@ -29,43 +64,79 @@ class Severity(enum.Enum):
 
 @dataclass(frozen=True)
 class AlarmDefinition:
-    code: str
+    code: AlarmCode
     text: str
     severity: Severity
 
 
-CATALOGUE: dict[str, AlarmDefinition] = {
+CATALOGUE: dict[AlarmCode, AlarmDefinition] = {
     d.code: d
     for d in (
-        AlarmDefinition("E001", "Emergency stop", Severity.FAULT),
-        AlarmDefinition("E002", "Guard open during motion", Severity.FAULT),
-        AlarmDefinition("E010", "Drive fault", Severity.FAULT),
-        AlarmDefinition("E011", "Following error too large", Severity.FAULT),
-        AlarmDefinition("E012", "Limit switch reached", Severity.FAULT),
-        AlarmDefinition("E013", "Drive not enabled during motion", Severity.FAULT),
-        AlarmDefinition("E014", "Drive did not enable", Severity.FAULT),
-        AlarmDefinition("E015", "Homing did not complete", Severity.FAULT),
-        AlarmDefinition("E016", "Axis lost its home position", Severity.FAULT),
-        AlarmDefinition("E020", "Communication with the drives or I/O lost", Severity.FAULT),
-        AlarmDefinition("E021", "A drive or the I/O refused a request", Severity.FAULT),
-        AlarmDefinition("E030", "Width gauge gave no reading", Severity.FAULT),
-        AlarmDefinition("E031", "Width gauge reading not understood", Severity.FAULT),
-        AlarmDefinition("E032", "Measured width not allowed for this recipe", Severity.FAULT),
-        AlarmDefinition("E033", "Width gauge disconnected", Severity.FAULT),
-        AlarmDefinition("E034", "Board too narrow to close the barrel", Severity.FAULT),
-        AlarmDefinition("E040", "Clamps did not reach their sensor", Severity.FAULT),
-        AlarmDefinition("E041", "Centering device did not reach its sensor", Severity.FAULT),
-        AlarmDefinition("E042", "Spindle did not start", Severity.FAULT),
-        AlarmDefinition("E043", "Spindle stopped while cutting", Severity.FAULT),
-        AlarmDefinition("E044", "Board removed during the cycle", Severity.FAULT),
-        AlarmDefinition("E050", "Tool path outside the axis travel", Severity.FAULT),
-        AlarmDefinition("E051", "Tool path could not be planned", Severity.FAULT),
-        AlarmDefinition("E052", "Move refused: it would cross the board", Severity.FAULT),
-        AlarmDefinition("E090", "Internal error in the machine process", Severity.FAULT),
-        AlarmDefinition("W101", "Jog stopped: no refresh from the screen", Severity.WARNING),
-        AlarmDefinition("W102", "Device event", Severity.WARNING),
-        AlarmDefinition("W103", "Records waiting for the database", Severity.WARNING),
-        AlarmDefinition("W104", "PIN entry locked after repeated wrong PINs", Severity.WARNING),
+        AlarmDefinition(AlarmCode.ESTOP, "Emergency stop", Severity.FAULT),
+        AlarmDefinition(AlarmCode.GUARD_OPEN, "Guard open during motion", Severity.FAULT),
+        AlarmDefinition(AlarmCode.DRIVE_FAULT, "Drive fault", Severity.FAULT),
+        AlarmDefinition(AlarmCode.FOLLOWING_ERROR, "Following error too large", Severity.FAULT),
+        AlarmDefinition(AlarmCode.LIMIT_SWITCH, "Limit switch reached", Severity.FAULT),
+        AlarmDefinition(
+            AlarmCode.DRIVE_NOT_ENABLED, "Drive not enabled during motion", Severity.FAULT
+        ),
+        AlarmDefinition(AlarmCode.DRIVE_DID_NOT_ENABLE, "Drive did not enable", Severity.FAULT),
+        AlarmDefinition(AlarmCode.HOMING_INCOMPLETE, "Homing did not complete", Severity.FAULT),
+        AlarmDefinition(AlarmCode.HOME_LOST, "Axis lost its home position", Severity.FAULT),
+        AlarmDefinition(
+            AlarmCode.COMMUNICATION_LOST,
+            "Communication with the drives or I/O lost",
+            Severity.FAULT,
+        ),
+        AlarmDefinition(
+            AlarmCode.DEVICE_REFUSED, "A drive or the I/O refused a request", Severity.FAULT
+        ),
+        AlarmDefinition(AlarmCode.GAUGE_NO_READING, "Width gauge gave no reading", Severity.FAULT),
+        AlarmDefinition(
+            AlarmCode.GAUGE_UNREADABLE, "Width gauge reading not understood", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.WIDTH_NOT_ALLOWED,
+            "Measured width not allowed for this recipe",
+            Severity.FAULT,
+        ),
+        AlarmDefinition(AlarmCode.GAUGE_DISCONNECTED, "Width gauge disconnected", Severity.FAULT),
+        AlarmDefinition(
+            AlarmCode.BARREL_NOT_CLOSABLE, "Board too narrow to close the barrel", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.CLAMPS_SENSOR, "Clamps did not reach their sensor", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.CENTERING_SENSOR, "Centering device did not reach its sensor", Severity.FAULT
+        ),
+        AlarmDefinition(AlarmCode.SPINDLE_NOT_STARTED, "Spindle did not start", Severity.FAULT),
+        AlarmDefinition(AlarmCode.SPINDLE_STOPPED, "Spindle stopped while cutting", Severity.FAULT),
+        AlarmDefinition(AlarmCode.BOARD_REMOVED, "Board removed during the cycle", Severity.FAULT),
+        AlarmDefinition(
+            AlarmCode.OUTSIDE_TRAVEL, "Tool path outside the axis travel", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.PLANNING_FAILED, "Tool path could not be planned", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.APPROACH_CROSSES_BOARD,
+            "Move refused: it would cross the board",
+            Severity.FAULT,
+        ),
+        AlarmDefinition(
+            AlarmCode.INTERNAL_ERROR, "Internal error in the machine process", Severity.FAULT
+        ),
+        AlarmDefinition(
+            AlarmCode.JOG_NOT_REFRESHED, "Jog stopped: no refresh from the screen", Severity.WARNING
+        ),
+        AlarmDefinition(AlarmCode.DEVICE_EVENT, "Device event", Severity.WARNING),
+        AlarmDefinition(
+            AlarmCode.RECORDS_WAITING, "Records waiting for the database", Severity.WARNING
+        ),
+        AlarmDefinition(
+            AlarmCode.PIN_LOCKED, "PIN entry locked after repeated wrong PINs", Severity.WARNING
+        ),
     )
 }
 
@@ -92,7 +163,7 @@ class AlarmTransition:
     """One line of the alarm history."""
 
     alarm_id: int
-    code: str
+    code: AlarmCode
     text: str
     source: str
     from_state: AlarmState
@@ -134,7 +205,7 @@ class AlarmManager:
 
     on_transition: Callable[[AlarmTransition], None] = lambda _t: None
     wall_clock: Callable[[], float] = time.time
-    _alarms: dict[tuple[str, str], Alarm] = field(default_factory=dict)
+    _alarms: dict[tuple[AlarmCode, str], Alarm] = field(default_factory=dict)
     _ids: itertools.count[int] = field(default_factory=lambda: itertools.count(1))
     history: list[AlarmTransition] = field(default_factory=list)
     history_limit: int = 1000
@@ -160,7 +231,7 @@ class AlarmManager:
             self._alarms.pop((alarm.definition.code, alarm.source), None)
         self.on_transition(transition)
 
-    def raise_alarm(self, code: str, source: str = "", detail: str = "") -> Alarm:
+    def raise_alarm(self, code: AlarmCode, source: str = "", detail: str = "") -> Alarm:
         """The condition of alarm ``code`` at ``source`` is active (idempotent)."""
         definition = CATALOGUE[code]
         key = (code, source)
@@ -176,7 +247,7 @@ class AlarmManager:
         self._apply(alarm, AlarmAction.CONDITION_ON)
         return alarm
 
-    def clear(self, code: str, source: str = "") -> None:
+    def clear(self, code: AlarmCode, source: str = "") -> None:
         """The condition returned to normal."""
         alarm = self._alarms.get((code, source))
         if alarm is not None:
@@ -202,7 +273,7 @@ class AlarmManager:
                 changed += 1
         return changed
 
-    def is_active(self, code: str, source: str = "") -> bool:
+    def is_active(self, code: AlarmCode, source: str = "") -> bool:
         alarm = self._alarms.get((code, source))
         return alarm is not None and alarm.state in (
             AlarmState.ACTIVE_UNACKED,

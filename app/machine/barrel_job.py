@@ -16,11 +16,12 @@ from app.data.recipe import Recipe
 from app.geometry.barrel_section import FULL_TURN_RAD
 from app.geometry.errors import GeometryError
 from app.geometry.limits import StaveLimits
+from app.machine.alarms import AlarmCode
 from app.machine.barrel_set import BarrelSet, BoardChoice, Placement
 from app.machine.cycle_plan import PlannedStave, PlanningError, plan_board
 from app.machine.planner.limits import MotionLimits
 
-TOO_NARROW_ALARM = "E034"
+TOO_NARROW_ALARM = AlarmCode.BARREL_NOT_CLOSABLE
 
 
 def new_barrel(recipe: Recipe, limits: StaveLimits, number: int = 1) -> BarrelSet | None:
@@ -51,7 +52,9 @@ def plan_barrel_board(
         placed = barrel.place(width_mm, choice)
     except GeometryError as exc:
         message = "; ".join(e.message for e in exc.errors)
-        raise PlanningError("E032", f"width {width_mm:.2f} mm: {message}", exc.errors) from exc
+        raise PlanningError(
+            AlarmCode.WIDTH_NOT_ALLOWED, f"width {width_mm:.2f} mm: {message}", exc.errors
+        ) from exc
     if placed.placement is Placement.TOO_NARROW:
         left = barrel.section.chord_mm(placed.stave.end_t_rad, FULL_TURN_RAD)
         raise PlanningError(

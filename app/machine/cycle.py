@@ -20,6 +20,7 @@ from typing import Any
 from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import CommunicationError, InputImage, OutputImage, WidthGauge
+from app.machine.alarms import AlarmCode
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
 from app.machine.executor import ExecutorOutput, PathExecutor
@@ -58,7 +59,7 @@ def run_now(job: PlanJob) -> concurrent.futures.Future[Any]:
 class CycleFault(Exception):
     """The cycle cannot go on: raise alarm ``code`` at ``source``."""
 
-    def __init__(self, code: str, detail: str, source: str = "") -> None:
+    def __init__(self, code: AlarmCode, detail: str, source: str = "") -> None:
         super().__init__(detail)
         self.code = code
         self.detail = detail
@@ -149,7 +150,9 @@ class AutomaticCycle:
     def _waited(self, now_s: float) -> float:
         return now_s - self._step_started_s
 
-    def _wait_sensor(self, ok: bool, now_s: float, travel_s: float, code: str, what: str) -> bool:
+    def _wait_sensor(
+        self, ok: bool, now_s: float, travel_s: float, code: AlarmCode, what: str
+    ) -> bool:
         if ok:
             return True
         limit_s = travel_s + self._config.io.sensor_timeout_s
@@ -207,11 +210,15 @@ class AutomaticCycle:
             and step is not CycleStep.UNCLAMPING
             and not inputs.part_present
         ):
-            raise CycleFault("E044", f"the part-present sensor went off while {step.value}")
+            raise CycleFault(
+                AlarmCode.BOARD_REMOVED, f"the part-present sensor went off while {step.value}"
+            )
 
         if step is CycleStep.WAIT_FOR_PART and self._continue_job is not None:
             if not inputs.part_present:
-                raise CycleFault("E044", "the partly cut board is no longer on the table")
+                raise CycleFault(
+                    AlarmCode.BOARD_REMOVED, "the partly cut board is no longer on the table"
+                )
             outputs = replace(outputs, spindle_on=False)
             # Enabled and planned from rest only: an axis still running down after the
             # interruption would start the retract from a position it has already left.
@@ -236,7 +243,7 @@ class AutomaticCycle:
                 inputs.centering_extended,
                 now_s,
                 io.centering_time_s,
-                "E041",
+                AlarmCode.CENTERING_SENSOR,
                 "centering device extended",
             ):
                 outputs = replace(outputs, clamps_close=True)
@@ -244,7 +251,11 @@ class AutomaticCycle:
         elif step is CycleStep.CLAMPING:
             outputs = replace(outputs, clamps_close=True)
             if self._wait_sensor(
-                inputs.clamps_closed, now_s, io.clamp_time_s, "E040", "clamps closed"
+                inputs.clamps_closed,
+                now_s,
+                io.clamp_time_s,
+                AlarmCode.CLAMPS_SENSOR,
+                "clamps closed",
             ):
                 outputs = replace(outputs, centering_extend=False)
                 self._request_width()
@@ -258,14 +269,14 @@ class AutomaticCycle:
                 inputs.centering_retracted,
                 now_s,
                 io.centering_time_s,
-                "E041",
+                AlarmCode.CENTERING_SENSOR,
                 "centering device retracted",
             )
             if centered_out and self._wait_sensor(
                 inputs.spindle_running,
                 now_s,
                 io.spindle_runup_s,
-                "E042",
+                AlarmCode.SPINDLE_NOT_STARTED,
                 "spindle running feedback",
             ):
                 assert self.planned is not None
@@ -282,7 +293,9 @@ class AutomaticCycle:
             outputs = self._cut(now_s, inputs, outputs, axes)
         elif step is CycleStep.UNCLAMPING:
             outputs = replace(outputs, clamps_close=False, spindle_on=False)
-            if self._wait_sensor(inputs.clamps_open, now_s, io.clamp_time_s, "E040", "clamps open"):
+            if self._wait_sensor(
+                inputs.clamps_open, now_s, io.clamp_time_s, AlarmCode.CLAMPS_SENSOR, "clamps open"
+            ):
                 self.finished = True
                 self._step_started_s = now_s
         return outputs
@@ -291,7 +304,7 @@ class AutomaticCycle:
         try:
             self._gauge.request()
         except CommunicationError as exc:
-            raise CycleFault("E033", str(exc), "gauge") from exc
+            raise CycleFault(AlarmCode.GAUGE_DISCONNECTED, str(exc), "gauge") from exc
 
     def _measure(
         self, now_s: float, inputs: InputImage, outputs: OutputImage, axes: AxisGroup
@@ -300,21 +313,27 @@ class AutomaticCycle:
             try:
                 reading = self._gauge.poll()
             except CommunicationError as exc:
-                raise CycleFault("E033", str(exc), "gauge") from exc
+                raise CycleFault(AlarmCode.GAUGE_DISCONNECTED, str(exc), "gauge") from exc
             if reading is None:
                 if self._waited(now_s) > GAUGE_TIMEOUT_S:
-                    raise CycleFault("E030", f"no reading within {GAUGE_TIMEOUT_S:.1f} s", "gauge")
+                    raise CycleFault(
+                        AlarmCode.GAUGE_NO_READING,
+                        f"no reading within {GAUGE_TIMEOUT_S:.1f} s",
+                        "gauge",
+                    )
                 return outputs
             if not reading.ok or reading.width_mm is None:
                 raise CycleFault(
-                    "E031", f"{reading.error or 'no width'} (raw {reading.raw!r})", "gauge"
+                    AlarmCode.GAUGE_UNREADABLE,
+                    f"{reading.error or 'no width'} (raw {reading.raw!r})",
+                    "gauge",
                 )
             width_mm = reading.width_mm
             self.outcome.width_mm = width_mm
             start = axes.positions()
             plan_job = self._plan_job
             if plan_job is None:
-                raise CycleFault("E090", "the cycle has no planning job", "cycle")
+                raise CycleFault(AlarmCode.INTERNAL_ERROR, "the cycle has no planning job", "cycle")
             self._plan_future = self._submit(lambda: plan_job(width_mm, start))
             return outputs
         if not self._plan_future.done():
@@ -324,7 +343,9 @@ class AutomaticCycle:
         except PlanningError as exc:
             raise CycleFault(exc.code, str(exc), "recipe") from exc
         except Exception as exc:
-            raise CycleFault("E051", f"{type(exc).__name__}: {exc}", "planner") from exc
+            raise CycleFault(
+                AlarmCode.PLANNING_FAILED, f"{type(exc).__name__}: {exc}", "planner"
+            ) from exc
         self.planned = planned
         self.plan_counter += 1
         self.outcome.d_mm = planned.profile.D
@@ -348,9 +369,11 @@ class AutomaticCycle:
             except PlanningError as exc:
                 raise CycleFault(exc.code, str(exc), "recipe") from exc
             except KeepOutRefused as exc:
-                raise CycleFault("E052", str(exc), "keep-out") from exc
+                raise CycleFault(AlarmCode.APPROACH_CROSSES_BOARD, str(exc), "keep-out") from exc
             except Exception as exc:
-                raise CycleFault("E051", f"{type(exc).__name__}: {exc}", "planner") from exc
+                raise CycleFault(
+                    AlarmCode.PLANNING_FAILED, f"{type(exc).__name__}: {exc}", "planner"
+                ) from exc
             self.continuation = continuation
             self.outcome.width_mm = planned.width_mm
             self.outcome.d_mm = planned.profile.D
@@ -387,7 +410,7 @@ class AutomaticCycle:
         if step is not self.step:
             self._go(step, now_s)
         if out.cutting and not inputs.spindle_running:
-            raise CycleFault("E043", "spindle running feedback lost", "spindle")
+            raise CycleFault(AlarmCode.SPINDLE_STOPPED, "spindle running feedback lost", "spindle")
         if out.phase is Phase.RETURN:
             outputs = replace(outputs, spindle_on=False)
         if out.done:

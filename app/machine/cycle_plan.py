@@ -19,6 +19,7 @@ from app.geometry.limits import StaveLimits
 from app.geometry.stave_cut import CutStage, StaveCut, StaveCutRefused, StaveSpec, cut_stave
 from app.geometry.toolpath import ToolPath
 from app.geometry.width_range import cuttable_widths
+from app.machine.alarms import AlarmCode
 from app.machine.barrel_set import NextStave
 from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.limits import MotionLimits
@@ -28,7 +29,7 @@ from app.machine.planner.stave_plan import StavePlan, plan_stave
 class PlanningError(Exception):
     """The board cannot be cut: ``code`` is the alarm to raise, the message says why."""
 
-    def __init__(self, code: str, message: str, errors: tuple[FieldError, ...] = ()) -> None:
+    def __init__(self, code: AlarmCode, message: str, errors: tuple[FieldError, ...] = ()) -> None:
         super().__init__(message)
         self.code = code
         self.errors = errors
@@ -78,21 +79,26 @@ def plan_board(
     try:
         cut = cut_stave(spec, width_mm, params, stave_limits)
     except StaveCutRefused as exc:
-        code = "E050" if exc.stage is CutStage.TRAVEL else "E032"
+        code = (
+            AlarmCode.OUTSIDE_TRAVEL
+            if exc.stage is CutStage.TRAVEL
+            else AlarmCode.WIDTH_NOT_ALLOWED
+        )
         message = "; ".join(e.message for e in exc.errors)
         if exc.stage is CutStage.TILT:
             message = f"width {width_mm:.2f} mm: {message}"
         # One alarm the operator can act on: the measured width and the recipe's bound.
         widths = cuttable_widths(spec, params, stave_limits)
         if widths is None:
-            code, message = "E032", f"this recipe cuts no board on this machine ({message})"
+            code = AlarmCode.WIDTH_NOT_ALLOWED
+            message = f"this recipe cuts no board on this machine ({message})"
         elif not widths.contains(width_mm):
-            code, message = "E032", widths.refusal(width_mm)
+            code, message = AlarmCode.WIDTH_NOT_ALLOWED, widths.refusal(width_mm)
         raise PlanningError(code, message, exc.errors) from exc
     try:
         plan = plan_stave(cut.toolpath, start_xyz, motion_limits)
     except KeepOutRefused as exc:
-        raise PlanningError("E052", str(exc)) from exc
+        raise PlanningError(AlarmCode.APPROACH_CROSSES_BOARD, str(exc)) from exc
     except (ValueError, ArithmeticError) as exc:
-        raise PlanningError("E051", str(exc)) from exc
+        raise PlanningError(AlarmCode.PLANNING_FAILED, str(exc)) from exc
     return PlannedStave(cut, plan)

@@ -18,6 +18,7 @@ from app.config import AxisConfig
 from app.machine.axes import AxisGroup
 from app.machine.commands import JOG_DEADMAN_S
 from app.machine.planner.jog import Jogger
+from app.machine.refusals import Reason, Refusal, refusal
 
 GROUPS: dict[str, tuple[str, ...]] = {"XY": ("X", "Y"), "Z": ("Z",)}
 
@@ -37,25 +38,21 @@ class ManualControl:
     def speed(self, group: str) -> tuple[float, float]:
         return self._speeds[group]
 
-    def set_speed(self, group: str, velocity: float, acceleration: float) -> str:
+    def set_speed(self, group: str, velocity: float, acceleration: float) -> Refusal | None:
         if group not in GROUPS:
-            return f"jog group {group!r} is not allowed: XY or Z"
+            return refusal(Reason.JOG_GROUP_UNKNOWN, repr(group))
         for name in GROUPS[group]:
             cfg = self._configs[name]
             if not 0 < velocity <= cfg.max_velocity:
-                return (
-                    f"jog speed {velocity:g} {cfg.unit}/s is not allowed: "
-                    f"above 0 and at most {cfg.max_velocity:g}"
-                )
+                return refusal(Reason.JOG_SPEED_RANGE, velocity, cfg.unit, cfg.max_velocity)
             if not 0 < acceleration <= cfg.max_acceleration:
-                return (
-                    f"jog acceleration {acceleration:g} {cfg.unit}/s² is not allowed: "
-                    f"above 0 and at most {cfg.max_acceleration:g}"
+                return refusal(
+                    Reason.JOG_ACCELERATION_RANGE, acceleration, cfg.unit, cfg.max_acceleration
                 )
         self._speeds[group] = (velocity, acceleration)
         for name in GROUPS[group]:
             self._joggers[name].set_limits(velocity, acceleration)
-        return ""
+        return None
 
     def _reset(self, name: str, position: float) -> None:
         """The jogger of ``name`` takes over the measured position, abandoning any motion
@@ -75,41 +72,41 @@ class ManualControl:
             if name in axes.feedback:
                 self._reset(name, axes.position(name))
 
-    def _check_axis(self, axis: str, axes: AxisGroup) -> str:
+    def _check_axis(self, axis: str, axes: AxisGroup) -> Refusal | None:
         """Refuse an unknown axis; ask the drives to enable (the jog is the operator's
         action that allows it; the motion starts once they are enabled)."""
         if axis not in self._joggers:
-            return f"axis {axis!r} is not allowed: X, Y or Z"
+            return refusal(Reason.AXIS_UNKNOWN, repr(axis))
         axes.request_enable()
-        return ""
+        return None
 
     @staticmethod
-    def _toward_active_switch(axis: str, direction: int, axes: AxisGroup) -> str:
+    def _toward_active_switch(axis: str, direction: int, axes: AxisGroup) -> Refusal | None:
         """After a limit trip the axis may only be jogged away from the switch."""
         fb = axes.feedback.get(axis)
         if fb is not None and fb.limit_positive and direction > 0:
-            return f"{axis}+ limit switch is active: jog {axis} in the - direction only"
+            return refusal(Reason.LIMIT_SWITCH_POSITIVE, axis)
         if fb is not None and fb.limit_negative and direction < 0:
-            return f"{axis}- limit switch is active: jog {axis} in the + direction only"
-        return ""
+            return refusal(Reason.LIMIT_SWITCH_NEGATIVE, axis)
+        return None
 
-    def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> str:
+    def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> Refusal | None:
         if reason := self._check_axis(axis, axes):
             return reason
         if direction not in (-1, 1):
-            return f"jog direction {direction} is not allowed: -1 or 1"
+            return refusal(Reason.JOG_DIRECTION_INVALID, direction)
         if reason := self._toward_active_switch(axis, direction, axes):
             return reason
         self._last_refresh_s[axis] = now_s
         return self._joggers[axis].press(direction).reason
 
-    def step(self, axis: str, distance: float, axes: AxisGroup) -> str:
+    def step(self, axis: str, distance: float, axes: AxisGroup) -> Refusal | None:
         if reason := self._check_axis(axis, axes):
             return reason
         if reason := self._toward_active_switch(axis, 1 if distance > 0 else -1, axes):
             return reason
         result = self._joggers[axis].step(distance)
-        return "" if result.accepted else result.reason
+        return None if result.accepted else result.reason
 
     def release(self, axis: str = "") -> None:
         for name, jogger in self._joggers.items():

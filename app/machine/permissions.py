@@ -1,16 +1,21 @@
 """ "May I do this now?" for every operator command, as pure functions of the machine's state.
 
 Why here and pure (after QtPyVCP's machine_actions ``ok()`` rules): the screens enable and
-disable their buttons from this answer, and show the reason as the message; the controller
-refuses the same commands with the same reason. One rule, tested without Qt.
+disable their buttons from this answer, and show the reason (a ``Refusal`` code, which they
+translate) as the message; the controller refuses the same commands with the same reason.
+These are the only rules: the state table (``app.machine.states``) says where each accepted
+command leads, and a test checks row by row that the two agree.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from app.drivers.contracts import InputImage
-from app.machine.states import LATCHED_STATES, MachineState
+from app.machine import commands as cmd
+from app.machine.refusals import Reason, Refusal
+from app.machine.states import LATCHED_STATES, MOVING_STATES, MachineState
 
 
 @dataclass(frozen=True)
@@ -25,172 +30,199 @@ class Facts:
     interrupted_unclamped: bool = False  # ... and the clamps have opened since
 
 
-def _latched(facts: Facts) -> str:
-    if facts.state in LATCHED_STATES:
-        return f"machine is in {facts.state.value}: press Reset first"
-    if facts.state is MachineState.POWER_UP:
-        return "machine is still starting up"
-    return ""
+Verdict = Refusal | None  # None: allowed now
 
-
-def may_start(f: Facts) -> str:
-    if reason := _latched(f):
-        return reason
-    if f.state is MachineState.MANUAL:
-        return "leave manual mode first"
-    if f.state is MachineState.AUTOMATIC:
-        return "a cycle is already running"
-    if f.state is not MachineState.READY or not f.all_homed:
-        return (
-            "axes are not homed: home the machine first"
-            if not f.all_homed
-            else f"not possible while {f.state.value}"
-        )
-    if f.interrupted:
-        return "a board is partly cut: Resume or Abandon it"
-    if not f.recipe_loaded:
-        return "select a recipe first"
-    if not f.inputs.guard_closed:
-        return "close the guard first"
-    return ""
-
-
-def may_resume(f: Facts) -> str:
-    if not f.interrupted:
-        return "no board is partly cut"
-    if reason := _latched(f):
-        return reason
-    if f.state is not MachineState.READY or not f.all_homed:
-        return (
-            "axes are not homed: abandon the board (their position is unknown)"
-            if not f.all_homed
-            else f"not possible while {f.state.value}"
-        )
-    if f.interrupted_unclamped or not (f.inputs.part_present and f.inputs.clamps_closed):
-        return "the board was unclamped: it may have moved, abandon it"
-    if not f.inputs.guard_closed:
-        return "close the guard first"
-    return ""
-
-
-def may_abandon(f: Facts) -> str:
-    if not f.interrupted:
-        return "no board is partly cut"
-    if reason := _latched(f):
-        return reason
-    if f.state not in (MachineState.READY, MachineState.NOT_HOMED):
-        return f"not possible while {f.state.value}"
-    if f.all_homed and not f.inputs.guard_closed:
-        return "close the guard first"
-    return ""
-
-
-def may_stop(f: Facts) -> str:
-    if f.state in (
-        MachineState.AUTOMATIC,
-        MachineState.HOMING,
-        MachineState.STOPPING,
-        MachineState.MANUAL,
-    ):
-        return ""
-    return "nothing is moving"
-
-
-def may_reset(f: Facts) -> str:
-    if f.state not in LATCHED_STATES:
-        return "nothing to reset"
-    if not f.inputs.estop_ok:
-        return "release the emergency stop first"
-    return ""
-
-
-def may_home(f: Facts) -> str:
-    if reason := _latched(f):
-        return reason
-    if f.state not in (MachineState.NOT_HOMED, MachineState.READY, MachineState.MANUAL):
-        return f"machine is busy ({f.state.value}): stop it first"
-    if not f.inputs.guard_closed and f.state is not MachineState.MANUAL:
-        return "close the guard first"
-    if f.interrupted:
-        return "a board is partly cut: Resume or Abandon it first"
-    if (f.inputs.part_present or f.inputs.clamps_closed) and not f.all_homed:
-        return (
-            "a board is on the table and the axes do not know where they are: "
-            "take the board off before homing"
-        )
-    return ""
-
-
-def may_enter_manual(f: Facts) -> str:
-    if reason := _latched(f):
-        return reason
-    if f.state is MachineState.MANUAL:
-        return "already in manual mode"
-    if f.state not in (MachineState.NOT_HOMED, MachineState.READY):
-        return f"machine is busy ({f.state.value}): stop it first"
-    return ""
-
-
-def may_leave_manual(f: Facts) -> str:
-    return "" if f.state is MachineState.MANUAL else "not in manual mode"
-
-
-def may_jog(f: Facts) -> str:
-    if reason := _latched(f):
-        return reason
-    return "" if f.state is MachineState.MANUAL else "open the Manual screen to jog"
-
-
-def may_spindle(f: Facts) -> str:
-    if reason := may_jog(f):
-        return reason
-    return "" if f.inputs.guard_closed else "close the guard first"
-
-
-def may_select_recipe(f: Facts) -> str:
-    if f.cycle_running or f.state in (MachineState.AUTOMATIC, MachineState.STOPPING):
-        return "wait until the cycle has ended"
-    return ""
-
-
-def may_simulate(f: Facts) -> str:
-    return "" if f.simulation else "only on the simulated machine"
-
-
-def always(_f: Facts) -> str:
-    return ""
-
-
-# command class name -> rule
-RULES = {
-    "Start": may_start,
-    "Resume": may_resume,
-    "Abandon": may_abandon,
-    "Stop": may_stop,
-    "Reset": may_reset,
-    "Home": may_home,
-    "EnterManual": may_enter_manual,
-    "LeaveManual": may_leave_manual,
-    "JogContinuous": may_jog,
-    "JogStep": may_jog,
-    "JogRelease": always,
-    "SetJogSpeed": always,
-    "SetClamps": may_jog,
-    "SetSpindle": may_spindle,
-    "SelectRecipe": may_select_recipe,
-    "StartBarrel": may_select_recipe,
-    "ChooseBoard": may_select_recipe,
-    "SetFeedOverride": always,
-    "Acknowledge": always,
-    "ReloadParameters": always,
-    "ResetShiftCounter": always,
-    "InjectFault": may_simulate,
-    "ClearFaults": may_simulate,
-    "LoadBoard": may_simulate,
-    "SetUser": always,
-    "Shutdown": always,
+R = Reason
+_LATCHED = {MachineState.ERROR: R.LATCHED_ERROR, MachineState.EMERGENCY_STOP: R.LATCHED_ESTOP}
+_BUSY = {
+    MachineState.AUTOMATIC: R.BUSY_AUTOMATIC,
+    MachineState.HOMING: R.BUSY_HOMING,
+    MachineState.STOPPING: R.BUSY_STOPPING,
+}
+_NOT_POSSIBLE = {
+    MachineState.HOMING: R.NOT_POSSIBLE_HOMING,
+    MachineState.STOPPING: R.NOT_POSSIBLE_STOPPING,
+    MachineState.NOT_HOMED: R.NOT_POSSIBLE_NOT_HOMED,
+    MachineState.AUTOMATIC: R.NOT_POSSIBLE_AUTOMATIC,
+    MachineState.MANUAL: R.NOT_POSSIBLE_MANUAL,
+    MachineState.READY: R.NOT_POSSIBLE_READY,
 }
 
 
-def allowed_commands(facts: Facts) -> dict[str, str]:
-    return {name: rule(facts) for name, rule in RULES.items()}
+def _no(reason: Reason) -> Refusal:
+    return Refusal(reason)
+
+
+def _latched(f: Facts) -> Verdict:
+    if f.state in _LATCHED:
+        return _no(_LATCHED[f.state])
+    if f.state is MachineState.POWER_UP:
+        return _no(R.STARTING_UP)
+    return None
+
+
+def _busy(f: Facts) -> Verdict:
+    return _no(_BUSY[f.state]) if f.state in _BUSY else None
+
+
+def may_start(f: Facts) -> Verdict:
+    if reason := _latched(f):
+        return reason
+    if f.state is MachineState.MANUAL:
+        return _no(R.LEAVE_MANUAL_FIRST)
+    if f.state is MachineState.AUTOMATIC:
+        return _no(R.CYCLE_RUNNING)
+    if not f.all_homed:
+        return _no(R.NOT_HOMED)
+    if f.state is not MachineState.READY:
+        return _no(_NOT_POSSIBLE[f.state])
+    if f.interrupted:
+        return _no(R.PARTLY_CUT_RESUME_OR_ABANDON)
+    if not f.recipe_loaded:
+        return _no(R.SELECT_RECIPE_FIRST)
+    if not f.inputs.guard_closed:
+        return _no(R.CLOSE_GUARD_FIRST)
+    return None
+
+
+def may_resume(f: Facts) -> Verdict:
+    if not f.interrupted:
+        return _no(R.NO_BOARD_PARTLY_CUT)
+    if reason := _latched(f):
+        return reason
+    if not f.all_homed:
+        return _no(R.NOT_HOMED_ABANDON)
+    if f.state is not MachineState.READY:
+        return _no(_NOT_POSSIBLE[f.state])
+    if f.interrupted_unclamped or not (f.inputs.part_present and f.inputs.clamps_closed):
+        return _no(R.UNCLAMPED_ABANDON)
+    if not f.inputs.guard_closed:
+        return _no(R.CLOSE_GUARD_FIRST)
+    return None
+
+
+def may_abandon(f: Facts) -> Verdict:
+    if not f.interrupted:
+        return _no(R.NO_BOARD_PARTLY_CUT)
+    if reason := _latched(f):
+        return reason
+    if f.state not in (MachineState.READY, MachineState.NOT_HOMED):
+        return _no(_NOT_POSSIBLE[f.state])
+    if f.all_homed and not f.inputs.guard_closed:
+        return _no(R.CLOSE_GUARD_FIRST)
+    return None
+
+
+def may_stop(f: Facts) -> Verdict:
+    if f.state in MOVING_STATES or f.state is MachineState.MANUAL:
+        return None
+    return _no(R.NOTHING_MOVING)
+
+
+def may_reset(f: Facts) -> Verdict:
+    if f.state not in LATCHED_STATES:
+        return _no(R.NOTHING_TO_RESET)
+    if not f.inputs.estop_ok:
+        return _no(R.RELEASE_ESTOP_FIRST)
+    return None
+
+
+def may_home(f: Facts) -> Verdict:
+    if reason := _latched(f) or _busy(f):
+        return reason
+    if not f.inputs.guard_closed and f.state is not MachineState.MANUAL:
+        return _no(R.CLOSE_GUARD_FIRST)
+    if f.interrupted:
+        return _no(R.PARTLY_CUT_FIRST)
+    if (f.inputs.part_present or f.inputs.clamps_closed) and not f.all_homed:
+        return _no(R.BOARD_ON_TABLE_UNHOMED)
+    return None
+
+
+def may_enter_manual(f: Facts) -> Verdict:
+    if reason := _latched(f):
+        return reason
+    if f.state is MachineState.MANUAL:
+        return _no(R.ALREADY_MANUAL)
+    return _busy(f)
+
+
+def may_leave_manual(f: Facts) -> Verdict:
+    return None if f.state is MachineState.MANUAL else _no(R.NOT_MANUAL)
+
+
+def may_jog(f: Facts) -> Verdict:
+    if reason := _latched(f):
+        return reason
+    return None if f.state is MachineState.MANUAL else _no(R.OPEN_MANUAL_TO_JOG)
+
+
+def may_spindle(f: Facts) -> Verdict:
+    if reason := may_jog(f):
+        return reason
+    return None if f.inputs.guard_closed else _no(R.CLOSE_GUARD_FIRST)
+
+
+def may_select_recipe(f: Facts) -> Verdict:
+    if f.cycle_running or f.state in (MachineState.AUTOMATIC, MachineState.STOPPING):
+        return _no(R.WAIT_FOR_CYCLE_END)
+    return None
+
+
+def may_simulate(f: Facts) -> Verdict:
+    return None if f.simulation else _no(R.SIMULATION_ONLY)
+
+
+def always(_f: Facts) -> Verdict:
+    return None
+
+
+Rule = Callable[[Facts], Verdict]
+
+# command type -> rule
+RULES: dict[type[cmd.Command], Rule] = {
+    cmd.Start: may_start,
+    cmd.Resume: may_resume,
+    cmd.Abandon: may_abandon,
+    cmd.Stop: may_stop,
+    cmd.Reset: may_reset,
+    cmd.Home: may_home,
+    cmd.EnterManual: may_enter_manual,
+    cmd.LeaveManual: may_leave_manual,
+    cmd.JogContinuous: may_jog,
+    cmd.JogStep: may_jog,
+    cmd.JogRelease: always,
+    cmd.SetJogSpeed: always,
+    cmd.SetClamps: may_jog,
+    cmd.SetSpindle: may_spindle,
+    cmd.SelectRecipe: may_select_recipe,
+    cmd.StartBarrel: may_select_recipe,
+    cmd.ChooseBoard: may_select_recipe,
+    cmd.SetFeedOverride: always,
+    cmd.Acknowledge: always,
+    cmd.ReloadParameters: always,
+    cmd.ResetShiftCounter: always,
+    cmd.InjectFault: may_simulate,
+    cmd.ClearFaults: may_simulate,
+    cmd.LoadBoard: may_simulate,
+    cmd.SetUser: always,
+    cmd.Shutdown: always,
+}
+
+
+def command_name(command: cmd.Command | type[cmd.Command]) -> str:
+    """The name a command is known by in the snapshot's ``allowed`` (its class name)."""
+    kind = command if isinstance(command, type) else type(command)
+    return kind.__name__
+
+
+def may(command: cmd.Command, facts: Facts) -> Verdict:
+    """Why ``command`` is not accepted now, or None if it is (anything that is not a command,
+    e.g. from a newer screen over the link, is refused)."""
+    rule = RULES.get(type(command))
+    return _no(R.UNKNOWN_COMMAND) if rule is None else rule(facts)
+
+
+def allowed_commands(facts: Facts) -> dict[str, Verdict]:
+    """Command name -> None if allowed now, or why not (what the screens enable buttons by)."""
+    return {command_name(kind): rule(facts) for kind, rule in RULES.items()}

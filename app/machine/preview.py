@@ -13,6 +13,7 @@ from app.geometry.limits import StaveLimits
 from app.geometry.outline import stave_drawing
 from app.geometry.stave_cut import StaveCutRefused, cut_stave
 from app.geometry.toolpath import ToolPath
+from app.machine.cycle_plan import PlannedStave
 from app.machine.snapshot import PlanPreview
 
 
@@ -45,3 +46,38 @@ def recipe_preview(
     except StaveCutRefused:
         return None
     return build_preview(plan_id, cut.toolpath)
+
+
+class PlanPublisher:
+    """The one plan the screens may fetch, by id: the selected recipe's at its nominal width
+    until a board is planned, then each planned board's, once."""
+
+    def __init__(self) -> None:
+        self.plan_id = 0
+        self._plans: dict[int, PlanPreview] = {}
+        self._published: PlannedStave | None = None
+
+    def recipe(
+        self,
+        recipe: Recipe,
+        params: Mapping[str, float],
+        limits: StaveLimits,
+        last_width_mm: float | None,
+    ) -> None:
+        preview = recipe_preview(self.plan_id + 1, recipe, params, limits, last_width_mm)
+        if preview is not None:
+            self._publish(preview)
+
+    def board(self, planned: PlannedStave) -> None:
+        """A planned board, published the first time only."""
+        if planned is self._published:
+            return
+        self._published = planned
+        self._publish(build_preview(self.plan_id + 1, planned.toolpath))
+
+    def _publish(self, preview: PlanPreview) -> None:
+        self.plan_id = preview.plan_id
+        self._plans = {self.plan_id: preview}
+
+    def get(self, plan_id: int) -> PlanPreview | None:
+        return self._plans.get(plan_id)

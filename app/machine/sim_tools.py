@@ -9,6 +9,7 @@ not there.
 from __future__ import annotations
 
 from app.drivers.contracts import FaultInjector, MachineBackend
+from app.machine.refusals import Reason, Refusal, refusal
 
 
 class SimulationTools:
@@ -16,15 +17,15 @@ class SimulationTools:
         self._backend = backend
         self._pending_board: tuple[float | None] | None = None
 
-    def inject(self, kind: str, target: str) -> str:
-        """Inject a fault; returns why it was refused, or ""."""
+    def inject(self, kind: str, target: str) -> Refusal | None:
+        """Inject a fault; returns why it was refused, or None."""
         injector = self._backend.extras.get("faults")
         if isinstance(injector, FaultInjector):
             try:
                 injector.inject(kind, target)
             except ValueError as exc:
-                return str(exc)
-        return ""
+                return refusal(Reason.SIMULATION_REFUSED, exc)
+        return None
 
     def clear(self) -> None:
         injector = self._backend.extras.get("faults")

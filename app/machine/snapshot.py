@@ -13,6 +13,7 @@ import enum
 from dataclasses import dataclass, field
 
 from app.drivers.contracts import InputImage, OutputImage
+from app.machine.refusals import Refusal
 from app.machine.states import CycleStep, MachineState, Mode
 
 
@@ -98,9 +99,9 @@ class MachineSnapshot:
     plan_id: int  # 0: no plan
     jog_xy: tuple[float, float]  # velocity, acceleration of manual X-Y jog
     jog_z: tuple[float, float]
-    # command name (the class name in app.machine.commands) -> "" if allowed now, or why not
-    allowed: dict[str, str] = field(default_factory=dict)
-    message: str = ""  # the last refusal or notice for the operator
+    # command name (the class name in app.machine.commands) -> None if allowed now, or why not
+    allowed: dict[str, Refusal | None] = field(default_factory=dict)
+    message: Refusal | None = None  # the last refusal or notice for the operator
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

@@ -3,14 +3,60 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from typing import Protocol
 
-from app.machine.permissions import allowed_commands
+from app.config import MachineConfig
+from app.data.recipe import Recipe
+from app.drivers.contracts import InputImage, MachineBackend, OutputImage
+from app.machine.alarms import AlarmManager
+from app.machine.axes import AxisGroup
+from app.machine.cycle import AutomaticCycle
+from app.machine.homing import HomingSequence
+from app.machine.manual import ManualControl
+from app.machine.permissions import Facts, allowed_commands
+from app.machine.refusals import Refusal
 from app.machine.snapshot import AxisView, CycleView, MachineSnapshot
-from app.machine.states import LATCHED_STATES, MachineState
+from app.machine.states import LATCHED_STATES, MachineState, Mode
 
-if TYPE_CHECKING:
-    from app.machine.controller import MachineController
+
+class MachineController(Protocol):
+    """What the snapshot reads of the controller (``app.machine.controller``); a protocol,
+    so that this module does not import the controller that imports it."""
+
+    config: MachineConfig
+    backend: MachineBackend
+    alarms: AlarmManager
+    axes: AxisGroup
+    manual: ManualControl
+    state: MachineState
+    mode: Mode
+    now_s: float
+    wall_clock: Callable[[], float]
+    inputs: InputImage
+    outputs: OutputImage
+    recipe: Recipe | None
+    cycle: AutomaticCycle | None
+    homing: HomingSequence | None
+    feed_override_pct: float
+    message: Refusal | None
+
+    @property
+    def pieces_shift(self) -> int: ...
+
+    @property
+    def pieces_total(self) -> int: ...
+
+    @property
+    def last_width_mm(self) -> float | None: ...
+
+    @property
+    def last_cycle_time_s(self) -> float | None: ...
+
+    @property
+    def plan_id(self) -> int: ...
+
+    def facts(self) -> Facts: ...
 
 
 def state_text(c: MachineController) -> str:

@@ -2,8 +2,8 @@
 
 Why a table: the original PLC spread its mode logic over Main, Step and Manual routines, and
 nobody could say from the code which state could follow which. Here every transition is one
-row of ``TRANSITIONS`` keyed by (state, event); anything not in the table is refused with a
-reason, and a test walks every row.
+row of ``TRANSITIONS`` keyed by (state, event); anything not in the table is refused, and a
+test walks every row.
 
     state            event                 next state        what it means
     ---------------  --------------------  ----------------  -----------------------------------
@@ -116,42 +116,40 @@ for _state in MachineState:
 
 LATCHED_STATES = frozenset({MachineState.ERROR, MachineState.EMERGENCY_STOP})
 MOVING_STATES = frozenset({MachineState.HOMING, MachineState.AUTOMATIC, MachineState.STOPPING})
+"""The states in which the machine moves on its own (the guard must stay closed, Stop stops
+it, nothing else may start); the one definition every rule uses."""
+
+# The signal tower: green while the machine works on its own, yellow while it waits for the
+# operator or winds down, red while latched.
+GREEN_LAMP_STATES = frozenset({MachineState.AUTOMATIC, MachineState.HOMING})
+YELLOW_LAMP_STATES = frozenset({MachineState.MANUAL, MachineState.STOPPING, MachineState.NOT_HOMED})
+
+
+def lamps(state: MachineState) -> dict[str, bool]:
+    """The signal tower's outputs for ``state`` (OutputImage field names)."""
+    return {
+        "lamp_green": state in GREEN_LAMP_STATES,
+        "lamp_yellow": state in YELLOW_LAMP_STATES,
+        "lamp_red": state in LATCHED_STATES,
+    }
 
 
 class TransitionRefused(Exception):
-    """An event the current state does not accept; ``reason`` is shown to the operator."""
+    """An event the current state does not accept. The operator's commands are checked by
+    the rules of ``app.machine.permissions`` first (with the reasons the screens show), so
+    this only happens when those rules and this table disagree."""
 
-    def __init__(self, state: MachineState, event: Event, reason: str) -> None:
-        super().__init__(reason)
+    def __init__(self, state: MachineState, event: Event) -> None:
+        super().__init__(f"{event.value} is not possible while {state.value}")
         self.state = state
         self.event = event
-        self.reason = reason
-
-
-def refusal_reason(state: MachineState, event: Event) -> str:
-    """Why ``event`` is not accepted in ``state``, in words an operator understands."""
-    if state in LATCHED_STATES:
-        return f"machine is in {state.value}: press Reset first"
-    if state is MachineState.POWER_UP:
-        return "machine is still starting up"
-    if event is Event.START and state is MachineState.NOT_HOMED:
-        return "axes are not homed: home the machine first"
-    if event is Event.START and state is MachineState.MANUAL:
-        return "leave manual mode first"
-    if event in (Event.START, Event.HOME, Event.ENTER_MANUAL) and state in MOVING_STATES:
-        return f"machine is busy ({state.value}): stop it first"
-    if event is Event.RESET:
-        return "nothing to reset"
-    if event is Event.STOP:
-        return "nothing is moving"
-    return f"{event.value} is not possible while {state.value}"
 
 
 def next_state(state: MachineState, event: Event, all_homed: bool) -> MachineState:
-    """The state after ``event``, or TransitionRefused with the reason."""
+    """The state after ``event``; raises TransitionRefused if the table has no such row."""
     target = TRANSITIONS.get((state, event))
     if target is None:
-        raise TransitionRefused(state, event, refusal_reason(state, event))
+        raise TransitionRefused(state, event)
     if isinstance(target, tuple):
         return target[0] if all_homed else target[1]
     return target

@@ -1,8 +1,9 @@
 """Every English text the screens show that comes from another layer's catalogue.
 
-Why collected here: alarm titles, refusal reasons and parameter descriptions are written in
-English by the machine and data layers (no Qt there); the screens translate them by their
-English text. This module lists them all, from the catalogues themselves, so that
+Why collected here: alarm titles, refusal reasons (the templates of
+``app.machine.refusals.Reason``) and parameter descriptions are written in English by the
+machine and data layers (no Qt there); the screens translate them by their English text.
+This module lists them all, from the catalogues themselves, so that
 ``resources/translations/update.py`` can put them into the .ts files and a test can check that
 each one has a Slovenian translation; a new alarm or rule then fails that test instead of
 silently appearing in English.
@@ -10,51 +11,19 @@ silently appearing in English.
 
 from __future__ import annotations
 
-import itertools
-
 from app.data.parameters import PARAMETERS
-from app.drivers.contracts import InputImage
 from app.machine.alarms import CATALOGUE
-from app.machine.permissions import RULES, Facts
-from app.machine.states import MachineState
+from app.machine.refusals import Reason
 from app.screens.texts import ALARM_TEXT_CONTEXT, MACHINE_TEXT_CONTEXT, PARAMETER_CONTEXT
 
-# Messages the machine sets besides its permission rules (``snapshot.message``) and the
-# screens' own wording for a missing machine.
-EXTRA_MACHINE_TEXTS: tuple[str, ...] = (
-    "reset done",
-    "unknown command",
-    "no connection to the machine",
-)
-
-
-def permission_reasons() -> set[str]:
-    """Every reason a permission rule can give, found by evaluating each rule on every
-    combination of the facts it reads."""
-    reasons: set[str] = set()
-    flags = (False, True)
-    for state, homed, recipe, guard, estop, running, simulation in itertools.product(
-        MachineState, flags, flags, flags, flags, flags, flags
-    ):
-        facts = Facts(
-            state=state,
-            all_homed=homed,
-            recipe_loaded=recipe,
-            inputs=InputImage(guard_closed=guard, estop_ok=estop),
-            cycle_running=running,
-            simulation=simulation,
-        )
-        for rule in RULES.values():
-            reason = rule(facts)
-            if reason:
-                reasons.add(reason)
-    return reasons
+# The screens' own wording for a missing machine (shown where a refusal would be).
+SCREEN_MACHINE_TEXTS: tuple[str, ...] = ("no connection to the machine",)
 
 
 def catalogue_texts() -> dict[str, list[str]]:
     """Context -> the English texts in it, sorted."""
     return {
-        MACHINE_TEXT_CONTEXT: sorted(permission_reasons() | set(EXTRA_MACHINE_TEXTS)),
+        MACHINE_TEXT_CONTEXT: sorted({r.value for r in Reason} | set(SCREEN_MACHINE_TEXTS)),
         ALARM_TEXT_CONTEXT: sorted({d.text for d in CATALOGUE.values()}),
         PARAMETER_CONTEXT: sorted({spec.description for spec in PARAMETERS}),
     }

@@ -14,6 +14,7 @@ from __future__ import annotations
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.data.users import Role
+from app.machine.refusals import Refusal
 from app.machine.snapshot import AlarmState
 from app.machine.states import CycleStep, MachineState
 
@@ -109,9 +110,14 @@ def role_text(role: Role) -> str:
     return _t("Roles", _ROLES[role])
 
 
-def machine_text(text: str) -> str:
-    """A message or refusal reason from the machine, translated when it is a known one."""
-    return _t(MACHINE_TEXT_CONTEXT, text) if text else ""
+def machine_text(message: Refusal | str | None) -> str:
+    """A message or refusal from the machine in the user's language: the reason's template
+    translated, then its arguments filled in (a plain text is one of the screens' own)."""
+    if message is None or message == "":
+        return ""
+    if isinstance(message, str):
+        return _t(MACHINE_TEXT_CONTEXT, message)
+    return message.text(lambda template: _t(MACHINE_TEXT_CONTEXT, template))
 
 
 def alarm_text(code: str, text: str) -> str:

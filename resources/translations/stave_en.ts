@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+51" />
+        <location filename="../../app/screens/texts.py" line="+52" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+32" />
+        <location filename="catalogue_strings.py" line="+84" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -415,9 +415,64 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-54" />
+        <location filename="catalogue_strings.py" line="-106" />
+        <source>%1 is not possible while %2</source>
+        <translation>%1 is not possible while %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 still in fault %2</source>
+        <translation>%1 still in fault %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1+ limit switch is active: jog %1 in the - direction only</source>
+        <translation>%1+ limit switch is active: jog %1 in the - direction only</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1- limit switch is active: jog %1 in the + direction only</source>
+        <translation>%1- limit switch is active: jog %1 in the + direction only</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1: Resume or Abandon</source>
+        <translation>%1: Resume or Abandon</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a board is on the table and the axes do not know where they are: take the board off before homing</source>
+        <translation>a board is on the table and the axes do not know where they are: take the board off before homing</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a board is on the table: moving clear of it before homing</source>
+        <translation>a board is on the table: moving clear of it before homing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a board is partly cut: Resume or Abandon it</source>
+        <translation>a board is partly cut: Resume or Abandon it</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a board is partly cut: Resume or Abandon it first</source>
+        <translation>a board is partly cut: Resume or Abandon it first</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>a cycle is already running</source>
         <translation>a cycle is already running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a step of 0 moves nothing</source>
+        <translation>a step of 0 moves nothing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>abandoning the board</source>
+        <translation>abandoning the board</translation>
     </message>
     <message>
         <location line="+1" />
@@ -426,13 +481,98 @@
     </message>
     <message>
         <location line="+1" />
+        <source>axes are not homed: abandon the board (their position is unknown)</source>
+        <translation>axes are not homed: abandon the board (their position is unknown)</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>axes are not homed: home the machine first</source>
         <translation>axes are not homed: home the machine first</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>axis %1 is at its soft limit</source>
+        <translation>axis %1 is at its soft limit</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1 is at its soft limit %2 = %3</source>
+        <translation>axis %1 is at its soft limit %2 = %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</source>
+        <translation>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>axis %1 is moving: release the jog first</source>
+        <translation>axis %1 is moving: release the jog first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1 is not allowed: X, Y or Z</source>
+        <translation>axis %1 is not allowed: X, Y or Z</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</source>
+        <translation>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>board abandoned: take it off</source>
+        <translation>board abandoned: take it off</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clipped to the soft limit %1 = %2</source>
+        <translation>clipped to the soft limit %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>close the guard first</source>
         <translation>close the guard first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>communication not restored</source>
+        <translation>communication not restored</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>emergency stop still pressed</source>
+        <translation>emergency stop still pressed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>feed override %1 % is not allowed: 0 to 120 %</source>
+        <translation>feed override %1 % is not allowed: 0 to 120 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>homing refused: %1</source>
+        <translation>homing refused: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</source>
+        <translation>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>jog direction %1 is not allowed: -1 or 1</source>
+        <translation>jog direction %1 is not allowed: -1 or 1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>jog group %1 is not allowed: XY or Z</source>
+        <translation>jog group %1 is not allowed: XY or Z</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
+        <translation>jog speed %1 %2/s is not allowed: above 0 and at most %3</translation>
     </message>
     <message>
         <location line="+1" />
@@ -486,13 +626,28 @@
     </message>
     <message>
         <location line="+1" />
+        <source>not possible while automatic</source>
+        <translation>not possible while automatic</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>not possible while homing</source>
         <translation>not possible while homing</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>not possible while manual</source>
+        <translation>not possible while manual</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>not possible while not homed</source>
         <translation>not possible while not homed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not possible while ready</source>
+        <translation>not possible while ready</translation>
     </message>
     <message>
         <location line="+1" />
@@ -521,6 +676,26 @@
     </message>
     <message>
         <location line="+1" />
+        <source>recipe %1 does not exist</source>
+        <translation>recipe %1 does not exist</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>recipe %1 has a fixed tilt: it makes no barrel</source>
+        <translation>recipe %1 has a fixed tilt: it makes no barrel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>recipe %1 no longer exists: abandon the board</source>
+        <translation>recipe %1 no longer exists: abandon the board</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>reconnection failed: %1</source>
+        <translation>reconnection failed: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>release the emergency stop first</source>
         <translation>release the emergency stop first</translation>
     </message>
@@ -531,8 +706,28 @@
     </message>
     <message>
         <location line="+1" />
+        <source>reset failed</source>
+        <translation>reset failed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>resuming the board</source>
+        <translation>resuming the board</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>select a recipe first</source>
         <translation>select a recipe first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the board was unclamped: it may have moved, abandon it</source>
+        <translation>the board was unclamped: it may have moved, abandon it</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the simulation refused: %1</source>
+        <translation>the simulation refused: %1</translation>
     </message>
     <message>
         <location line="+1" />

@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+51"/>
+        <location filename="../../app/screens/texts.py" line="+52"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+32"/>
+        <location filename="catalogue_strings.py" line="+84"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -415,9 +415,64 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-54"/>
+        <location filename="catalogue_strings.py" line="-106"/>
+        <source>%1 is not possible while %2</source>
+        <translation>%1 ni mogoče v stanju %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 still in fault %2</source>
+        <translation>%1 je še vedno v napaki %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1+ limit switch is active: jog %1 in the - direction only</source>
+        <translation>končno stikalo %1+ je aktivno: %1 premikajte samo v smeri -</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1- limit switch is active: jog %1 in the + direction only</source>
+        <translation>končno stikalo %1- je aktivno: %1 premikajte samo v smeri +</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: Resume or Abandon</source>
+        <translation>%1: nadaljujte ali opustite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a board is on the table and the axes do not know where they are: take the board off before homing</source>
+        <translation>na mizi je deska, osi pa ne vedo, kje so: pred referenciranjem odstranite desko</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a board is on the table: moving clear of it before homing</source>
+        <translation>na mizi je deska: pred referenciranjem se umikam od nje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a board is partly cut: Resume or Abandon it</source>
+        <translation>deska je delno obdelana: nadaljujte ali jo opustite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a board is partly cut: Resume or Abandon it first</source>
+        <translation>deska je delno obdelana: najprej nadaljujte ali jo opustite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>a cycle is already running</source>
         <translation>cikel že teče</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step of 0 moves nothing</source>
+        <translation>korak 0 ničesar ne premakne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoning the board</source>
+        <translation>opuščanje deske</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -426,13 +481,98 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>axes are not homed: abandon the board (their position is unknown)</source>
+        <translation>osi niso referencirane: opustite desko (njihov položaj ni znan)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>axes are not homed: home the machine first</source>
         <translation>osi niso referencirane: najprej referencirajte stroj</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>axis %1 is at its soft limit</source>
+        <translation>os %1 je na programski meji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1 is at its soft limit %2 = %3</source>
+        <translation>os %1 je na programski meji %2 = %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</source>
+        <translation>os %1 je čez programsko mejo %2 = %3 (%4): dovoljen je le premik nazaj proti območju</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>axis %1 is moving: release the jog first</source>
+        <translation>os %1 se premika: najprej spustite ročni premik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1 is not allowed: X, Y or Z</source>
+        <translation>os %1 ni dovoljena: X, Y ali Z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</source>
+        <translation>deska opuščena in odpeta: odstranite jo (nič se ni premaknilo: preverite, da rezkar ni na njej)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>board abandoned: take it off</source>
+        <translation>deska opuščena: odstranite jo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clipped to the soft limit %1 = %2</source>
+        <translation>omejeno na programsko mejo %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>close the guard first</source>
         <translation>najprej zaprite zaščito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>communication not restored</source>
+        <translation>komunikacija ni obnovljena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>emergency stop still pressed</source>
+        <translation>zasilna zaustavitev je še pritisnjena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feed override %1 % is not allowed: 0 to 120 %</source>
+        <translation>korekcija podajanja %1 % ni dovoljena: 0 do 120 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>homing refused: %1</source>
+        <translation>referenciranje zavrnjeno: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</source>
+        <translation>pospešek ročnega premika %1 %2/s² ni dovoljen: nad 0 in največ %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>jog direction %1 is not allowed: -1 or 1</source>
+        <translation>smer ročnega premika %1 ni dovoljena: -1 ali 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog group %1 is not allowed: XY or Z</source>
+        <translation>skupina ročnega premika %1 ni dovoljena: XY ali Z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
+        <translation>hitrost ročnega premika %1 %2/s ni dovoljena: nad 0 in največ %3</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -486,13 +626,28 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>not possible while automatic</source>
+        <translation>ni mogoče med avtomatiko</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>not possible while homing</source>
         <translation>ni mogoče med referenciranjem</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>not possible while manual</source>
+        <translation>ni mogoče v ročnem načinu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>not possible while not homed</source>
         <translation>ni mogoče, dokler osi niso referencirane</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not possible while ready</source>
+        <translation>ni mogoče v stanju pripravljenosti</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -521,6 +676,26 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>recipe %1 does not exist</source>
+        <translation>recept %1 ne obstaja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recipe %1 has a fixed tilt: it makes no barrel</source>
+        <translation>recept %1 ima stalen nagib: iz njega ne nastane sod</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>recipe %1 no longer exists: abandon the board</source>
+        <translation>recept %1 ne obstaja več: opustite desko</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reconnection failed: %1</source>
+        <translation>ponovna povezava ni uspela: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>release the emergency stop first</source>
         <translation>najprej sprostite zasilno zaustavitev</translation>
     </message>
@@ -531,8 +706,28 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>reset failed</source>
+        <translation>ponastavitev ni uspela</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>resuming the board</source>
+        <translation>nadaljevanje deske</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>select a recipe first</source>
         <translation>najprej izberite recept</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the board was unclamped: it may have moved, abandon it</source>
+        <translation>deska je bila odpeta: morda se je premaknila, opustite jo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the simulation refused: %1</source>
+        <translation>simulacija je zavrnila: %1</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -5,26 +5,21 @@ at 0 %, abort freezes, and the feedback checks name the axis and the violation."
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.drivers.contracts import AxisFeedback
 from app.machine.executor import (
     ExecutorOutput,
     ExecutorState,
     PathExecutor,
-    ViolationKind,
-    check_feedback,
 )
 from app.machine.planner.point_to_point import plan_point_to_point
 from app.machine.planner.stave_plan import StavePlan
 from app.machine.planner.trajectory import Phase
 from tests.machine.planner.support import (
-    CONFIG,
     LIMITS,
     PERIOD_S,
     assert_within_limits,
@@ -225,79 +220,3 @@ def test_bad_override_is_refused_with_its_value(bad) -> None:
 def test_bad_period_is_refused(bad) -> None:
     with pytest.raises(ValueError, match="period_s"):
         PathExecutor(PLAN, bad)
-
-
-# -- check_feedback ---------------------------------------------------------------------------
-
-ENABLED = 0x27  # operation enabled
-HEALTHY = {name: AxisFeedback(name, ENABLED, 10.0, 0.0, 0.01) for name in ("X", "Y", "Z")}
-SETPOINT = {"X": 10.0, "Y": 10.0, "Z": 1.0}
-
-
-def test_healthy_feedback_has_no_violation() -> None:
-    assert check_feedback(HEALTHY, SETPOINT, CONFIG.axes) == []
-
-
-@pytest.mark.parametrize(
-    ("axis", "change", "kind", "text"),
-    [
-        ("X", {"following_error": 2.5}, ViolationKind.FOLLOWING_ERROR, "following error 2.500"),
-        ("Y", {"following_error": -2.1}, ViolationKind.FOLLOWING_ERROR, "exceeds 2 mm"),
-        ("Z", {"limit_positive": True}, ViolationKind.LIMIT_POSITIVE, "positive limit"),
-        ("X", {"limit_negative": True}, ViolationKind.LIMIT_NEGATIVE, "negative limit"),
-        (
-            "Y",
-            {"statusword": 0x08, "fault_code": 0x7500},
-            ViolationKind.DRIVE_FAULT,
-            "fault code 0x7500",
-        ),
-        ("Z", {"statusword": 0x40}, ViolationKind.NOT_ENABLED, "switch on disabled"),
-    ],
-)
-def test_each_violation_names_the_axis(axis, change, kind, text) -> None:
-    feedback = dict(HEALTHY)
-    feedback[axis] = replace(feedback[axis], **change)
-    violations = check_feedback(feedback, SETPOINT, CONFIG.axes)
-    assert [(v.axis, v.kind) for v in violations] == [(axis, kind)]
-    assert violations[0].message.startswith(f"axis {axis}:") and text in violations[0].message
-
-
-def test_not_enabled_is_only_a_violation_while_moving_and_missing_feedback_is() -> None:
-    feedback = dict(HEALTHY)
-    feedback["X"] = replace(feedback["X"], statusword=0x40)
-    assert check_feedback(feedback, None, CONFIG.axes, motion_active=False) == []
-    del feedback["Y"]
-    kinds = [v.kind for v in check_feedback(feedback, None, CONFIG.axes, motion_active=False)]
-    assert kinds == [ViolationKind.NO_FEEDBACK]
-
-
-def test_a_setpoint_beyond_the_soft_limit_is_a_violation() -> None:
-    violations = check_feedback(HEALTHY, {"X": 4000.0, "Y": 0.0, "Z": 0.0}, CONFIG.axes)
-    assert [(v.axis, v.kind, v.limit) for v in violations] == [
-        ("X", ViolationKind.SOFT_LIMIT, CONFIG.axes["X"].max_position)
-    ]
-
-
-def test_a_setpoint_standing_or_moving_back_into_the_soft_limits_is_no_violation() -> None:
-    low = CONFIG.axes["X"].min_position
-    inward = check_feedback(
-        HEALTHY,
-        {"X": low - 0.01, "Y": 0.0, "Z": 0.0},
-        CONFIG.axes,
-        previous_setpoint={"X": low - 0.02, "Y": 0.0, "Z": 0.0},
-    )
-    assert inward == []
-    outward = check_feedback(
-        HEALTHY,
-        {"X": low - 0.02, "Y": 0.0, "Z": 0.0},
-        CONFIG.axes,
-        previous_setpoint={"X": low - 0.01, "Y": 0.0, "Z": 0.0},
-    )
-    assert [(v.axis, v.kind) for v in outward] == [("X", ViolationKind.SOFT_LIMIT)]
-    still = check_feedback(
-        HEALTHY,
-        {"X": low - 0.02, "Y": 0.0, "Z": 0.0},
-        CONFIG.axes,
-        previous_setpoint={"X": low - 0.02, "Y": 0.0, "Z": 0.0},
-    )
-    assert still == []

@@ -41,7 +41,7 @@ def test_homing_with_a_clamped_board_moves_clear_first_and_never_crosses_it(
         watch = KeepOutWatch(dict(params), c.recipe.length_mm, 280.0)  # the widest board
         rig.runtime.on_tick.append(watch)
         rig.send(cmd.Home())
-        assert "moving clear" in c.message, (c.message, rig.positions())
+        assert "moving clear" in str(c.message), (c.message, rig.positions())
         rig.until(lambda m: m.homing is None, 300.0)
         assert c.axes.all_homed()
         assert watch.touching_periods == 0, watch.violations[:3]

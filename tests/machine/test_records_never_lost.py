@@ -25,7 +25,7 @@ from app.data.pending import WriteJournal, journal_path
 from app.data.recipe_files import recipes_to_csv
 from app.data.users import Role
 from app.machine import commands as cmd
-from app.machine import controller as controller_module
+from app.machine import core as controller_module
 from app.machine.database_store import DatabaseStore, ThreadedStore, open_store
 from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState

@@ -47,7 +47,7 @@ def test_a_board_too_wide_raises_one_alarm_with_both_widths_before_anything_move
         text = alarms[0].text
         assert "199.9 mm" in text and "at most 178" in text and "take the board off" in text
         assert rig.positions() == pytest.approx(still, abs=0.01), "nothing moved"
-        assert rig.controller.interrupted is None
+        assert rig.controller.partly_cut.board is None
     finally:
         rig.runtime.shutdown()
 

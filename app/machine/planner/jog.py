@@ -29,6 +29,7 @@ from ruckig import Trajectory as RuckigTrajectory
 
 from app.machine.planner.otg import calculate
 from app.machine.planner.trajectory import PlannerError
+from app.machine.refusals import Reason, Refusal, refusal
 
 if TYPE_CHECKING:
     from app.config import AxisConfig
@@ -50,7 +51,7 @@ class JogResult:
 
     accepted: bool
     target: float | None
-    reason: str = ""
+    reason: Refusal | None = None
 
 
 def _finite(name: str, value: float, *, positive: bool = False) -> float:
@@ -178,9 +179,9 @@ class Jogger:
         if self._mode is JogMode.CONTINUOUS and self._direction == direction:
             self._since_press_s = 0.0
             return JogResult(True, self._target)
-        refusal = self._refuse_outward(direction)
-        if refusal:
-            return JogResult(False, None, refusal)
+        refused = self._refuse_outward(direction)
+        if refused:
+            return JogResult(False, None, refused)
         target = self._max if direction > 0 else self._min
         self._mode = JogMode.CONTINUOUS
         self._direction = direction
@@ -210,28 +211,28 @@ class Jogger:
         running, from that step's target). Clipped at the soft limits, with the reason."""
         distance = _finite("distance", distance)
         if distance == 0.0:
-            return JogResult(False, None, "a step of 0 moves nothing")
+            return JogResult(False, None, Refusal(Reason.STEP_OF_ZERO))
         if self._mode in (JogMode.CONTINUOUS, JogMode.STOPPING):
-            return JogResult(False, None, f"axis {self.axis} is moving: release the jog first")
+            return JogResult(False, None, refusal(Reason.RELEASE_JOG_FIRST, self.axis))
         direction = 1 if distance > 0.0 else -1
-        refusal = self._refuse_outward(direction)
-        if refusal:
-            return JogResult(False, None, refusal)
+        refused = self._refuse_outward(direction)
+        if refused:
+            return JogResult(False, None, refused)
         base = (
             self._target
             if self._mode is JogMode.STEP and self._target is not None
             else self.position
         )
         target = base + distance
-        reason = ""
+        reason = None
         if target > self._max and direction > 0:
             target = max(self._max, base)
-            reason = f"clipped to the soft limit max_position = {self._max:g}"
+            reason = refusal(Reason.CLIPPED_TO_SOFT_LIMIT, "max_position", self._max)
         elif target < self._min and direction < 0:
             target = min(self._min, base)
-            reason = f"clipped to the soft limit min_position = {self._min:g}"
+            reason = refusal(Reason.CLIPPED_TO_SOFT_LIMIT, "min_position", self._min)
         if target == base:
-            return JogResult(False, None, f"axis {self.axis} is at its soft limit")
+            return JogResult(False, None, refusal(Reason.AT_SOFT_LIMIT, self.axis))
         self._mode = JogMode.STEP
         self._direction = direction
         self._plan_to(target)
@@ -266,23 +267,21 @@ class Jogger:
         return self.position
 
     # -- internals -------------------------------------------------------------------------
-    def _refuse_outward(self, direction: int) -> str:
+    def _refuse_outward(self, direction: int) -> Refusal | None:
         p = self.position
         if direction > 0 and p >= self._max - _LIMIT_TOLERANCE:
             if p > self._max + _LIMIT_TOLERANCE:
-                return (
-                    f"axis {self.axis} is beyond its soft limit max_position = "
-                    f"{self._max:g} ({p:.3f}): only motion back toward the range is allowed"
+                return refusal(
+                    Reason.BEYOND_SOFT_LIMIT, self.axis, "max_position", self._max, f"{p:.3f}"
                 )
-            return f"axis {self.axis} is at its soft limit max_position = {self._max:g}"
+            return refusal(Reason.AT_SOFT_LIMIT_VALUE, self.axis, "max_position", self._max)
         if direction < 0 and p <= self._min + _LIMIT_TOLERANCE:
             if p < self._min - _LIMIT_TOLERANCE:
-                return (
-                    f"axis {self.axis} is beyond its soft limit min_position = "
-                    f"{self._min:g} ({p:.3f}): only motion back toward the range is allowed"
+                return refusal(
+                    Reason.BEYOND_SOFT_LIMIT, self.axis, "min_position", self._min, f"{p:.3f}"
                 )
-            return f"axis {self.axis} is at its soft limit min_position = {self._min:g}"
-        return ""
+            return refusal(Reason.AT_SOFT_LIMIT_VALUE, self.axis, "min_position", self._min)
+        return None
 
     def _input(self, acceleration: float | None = None) -> InputParameter:
         inp = InputParameter(1)

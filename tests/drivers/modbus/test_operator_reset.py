@@ -62,7 +62,7 @@ def test_the_first_reset_after_the_link_came_back_works(
 
     c.post(cmd.Reset())  # pressed too early: the server is still away
     runtime.run_for(0.2)
-    assert c.state is MachineState.ERROR and "reconnection failed" in c.message
+    assert c.state is MachineState.ERROR and "reconnection failed" in str(c.message)
 
     emulator.serve_tcp(port=runtime.port)  # type: ignore[attr-defined]
     c.post(cmd.Reset())  # once

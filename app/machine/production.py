@@ -1,0 +1,79 @@
+"""What the machine records of its production: one piece record per board (cut, rejected
+or aborted), the shift and total counters, the last width and cycle time.
+
+Why apart from the controller: counting and recording is bookkeeping, not control; it reads
+the finished cycle and writes to the store, and nothing in it decides what moves.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from app.machine.cycle import AutomaticCycle
+from app.machine.states import CycleStep
+from app.machine.store import MachineStore, PieceRecord
+
+KEPT_CYCLES = 10  # the last cycles kept for `stave simulate` and the tests to inspect
+
+
+class Production:
+    def __init__(self, store: MachineStore, wall_clock: Callable[[], float]) -> None:
+        self._store = store
+        self._wall_clock = wall_clock
+        self.shift_start = wall_clock()
+        self.pieces_shift, self.pieces_total = store.piece_counts(self.shift_start)
+        self.last_width_mm: float | None = None
+        self.last_cycle_time_s: float | None = None
+        self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
+
+    def reset_shift(self) -> None:
+        self.shift_start = self._wall_clock()
+        self.pieces_shift = 0
+
+    def finished(self, cycle: AutomaticCycle, now_s: float) -> None:
+        """A board cut (a resumed one too): counted, recorded, its width shown until the
+        next one."""
+        cycle_time_s = now_s - cycle.started_s
+        self._record(cycle, cycle_time_s, "ok", None, resumed=cycle.is_continuation)
+        self.pieces_shift += 1
+        self.pieces_total += 1
+        self.last_width_mm = cycle.outcome.width_mm
+        self.last_cycle_time_s = cycle_time_s
+
+    def aborted(self, cycle: AutomaticCycle, now_s: float, alarm: str | None) -> None:
+        """A cycle ended before its board was cut: "rejected" if it was never planned (the
+        width was refused), else "aborted"; nothing is recorded while no board was there."""
+        if cycle.step is CycleStep.WAIT_FOR_PART:
+            return
+        result = "rejected" if cycle.planned is None else "aborted"
+        self._record(cycle, now_s - cycle.started_s, result, alarm)
+
+    def abandoned(self, cycle: AutomaticCycle, now_s: float, alarm: str | None) -> None:
+        """A partly cut board taken clear of the cutter and given up."""
+        self._record(cycle, now_s - cycle.started_s, "aborted", alarm)
+
+    def _record(
+        self,
+        cycle: AutomaticCycle,
+        cycle_time_s: float,
+        result: str,
+        alarm: str | None,
+        resumed: bool = False,
+    ) -> None:
+        o = cycle.outcome
+        piece = PieceRecord(
+            self._wall_clock(),
+            cycle.recipe.id,
+            cycle.recipe.name,
+            o.width_mm,
+            o.d_mm,
+            o.r_mm,
+            o.tilt_deg,
+            cycle_time_s,
+            result,
+            alarm,
+            resumed,
+        )
+        self._store.record_piece(piece)
+        self.finished_cycles.append((piece, cycle))
+        del self.finished_cycles[:-KEPT_CYCLES]

@@ -1,0 +1,128 @@
+"""Everything the machine tells the operator in words: why a command is refused, and how a
+Reset ended, as codes with arguments.
+
+Why codes: the machine has no Qt and no language; the screens translate. A ``Refusal``
+travels in the snapshot as its ``Reason`` and its arguments (axis names, numbers, a
+device's own detail); the screens translate the reason's English template (Qt's ``%1``
+placeholders) and fill in the arguments. The list of texts to translate is this enum.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Callable
+from dataclasses import dataclass
+
+
+class Reason(enum.Enum):
+    """The English template of each message; ``%1``, ``%2``... are the arguments."""
+
+    LATCHED_ERROR = "machine is in error: press Reset first"
+    LATCHED_ESTOP = "machine is in emergency stop: press Reset first"
+    STARTING_UP = "machine is still starting up"
+    LEAVE_MANUAL_FIRST = "leave manual mode first"
+    CYCLE_RUNNING = "a cycle is already running"
+    NOT_HOMED = "axes are not homed: home the machine first"
+    NOT_POSSIBLE_HOMING = "not possible while homing"
+    NOT_POSSIBLE_STOPPING = "not possible while stopping"
+    NOT_POSSIBLE_NOT_HOMED = "not possible while not homed"
+    NOT_POSSIBLE_AUTOMATIC = "not possible while automatic"
+    NOT_POSSIBLE_MANUAL = "not possible while manual"
+    NOT_POSSIBLE_READY = "not possible while ready"
+    PARTLY_CUT_RESUME_OR_ABANDON = "a board is partly cut: Resume or Abandon it"
+    PARTLY_CUT_FIRST = "a board is partly cut: Resume or Abandon it first"
+    NO_BOARD_PARTLY_CUT = "no board is partly cut"
+    NOT_HOMED_ABANDON = "axes are not homed: abandon the board (their position is unknown)"
+    UNCLAMPED_ABANDON = "the board was unclamped: it may have moved, abandon it"
+    BOARD_ON_TABLE_UNHOMED = (
+        "a board is on the table and the axes do not know where they are: "
+        "take the board off before homing"
+    )
+    INTERRUPTED_BOARD = "%1: Resume or Abandon"
+    RECIPE_GONE_ABANDON = "recipe %1 no longer exists: abandon the board"
+    RESUMING = "resuming the board"
+    ABANDONING = "abandoning the board"
+    ABANDONED = "board abandoned: take it off"
+    ABANDONED_UNCLAMPED = (
+        "board abandoned and unclamped: take it off (nothing moved: check that the cutter "
+        "is clear of it)"
+    )
+    SELECT_RECIPE_FIRST = "select a recipe first"
+    CLOSE_GUARD_FIRST = "close the guard first"
+    NOTHING_MOVING = "nothing is moving"
+    NOTHING_TO_RESET = "nothing to reset"
+    RELEASE_ESTOP_FIRST = "release the emergency stop first"
+    BUSY_AUTOMATIC = "machine is busy (automatic): stop it first"
+    BUSY_HOMING = "machine is busy (homing): stop it first"
+    BUSY_STOPPING = "machine is busy (stopping): stop it first"
+    ALREADY_MANUAL = "already in manual mode"
+    NOT_MANUAL = "not in manual mode"
+    OPEN_MANUAL_TO_JOG = "open the Manual screen to jog"
+    WAIT_FOR_CYCLE_END = "wait until the cycle has ended"
+    SIMULATION_ONLY = "only on the simulated machine"
+    UNKNOWN_COMMAND = "unknown command"
+    NOT_POSSIBLE_NOW = "%1 is not possible while %2"
+    RECIPE_MISSING = "recipe %1 does not exist"
+    FIXED_TILT_NO_BARREL = "recipe %1 has a fixed tilt: it makes no barrel"
+    FEED_OVERRIDE_RANGE = "feed override %1 % is not allowed: 0 to 120 %"
+    RECONNECT_FAILED = "reconnection failed: %1"
+    RESET_DONE = "reset done"
+    RESET_FAILED = "reset failed"
+    DRIVE_STILL_FAULTED = "%1 still in fault %2"
+    ESTOP_STILL_PRESSED = "emergency stop still pressed"
+    COMMS_NOT_RESTORED = "communication not restored"
+    JOG_GROUP_UNKNOWN = "jog group %1 is not allowed: XY or Z"
+    JOG_SPEED_RANGE = "jog speed %1 %2/s is not allowed: above 0 and at most %3"
+    JOG_ACCELERATION_RANGE = "jog acceleration %1 %2/s² is not allowed: above 0 and at most %3"
+    AXIS_UNKNOWN = "axis %1 is not allowed: X, Y or Z"
+    JOG_DIRECTION_INVALID = "jog direction %1 is not allowed: -1 or 1"
+    LIMIT_SWITCH_POSITIVE = "%1+ limit switch is active: jog %1 in the - direction only"
+    LIMIT_SWITCH_NEGATIVE = "%1- limit switch is active: jog %1 in the + direction only"
+    STEP_OF_ZERO = "a step of 0 moves nothing"
+    RELEASE_JOG_FIRST = "axis %1 is moving: release the jog first"
+    AT_SOFT_LIMIT = "axis %1 is at its soft limit"
+    AT_SOFT_LIMIT_VALUE = "axis %1 is at its soft limit %2 = %3"
+    BEYOND_SOFT_LIMIT = (
+        "axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range "
+        "is allowed"
+    )
+    CLIPPED_TO_SOFT_LIMIT = "clipped to the soft limit %1 = %2"
+    SIMULATION_REFUSED = "the simulation refused: %1"
+    HOMING_REFUSED = "homing refused: %1"
+    HOMING_AROUND_BOARD = "a board is on the table: moving clear of it before homing"
+
+
+def fill(template: str, args: tuple[str, ...]) -> str:
+    """Qt's QString::arg for ``%1``..``%9``: each placeholder replaced by its argument (the
+    screens fill a translated template the same way)."""
+    text = template
+    for number in range(len(args), 0, -1):  # %10 before %1, should there ever be ten
+        text = text.replace(f"%{number}", args[number - 1])
+    return text
+
+
+@dataclass(frozen=True)
+class Refusal:
+    """One message: its reason, the arguments of the reason's template, and the causes that
+    explain it (a failed Reset lists what still holds)."""
+
+    reason: Reason
+    args: tuple[str, ...] = ()
+    causes: tuple[Refusal, ...] = ()
+
+    def text(self, translate: Callable[[str], str] = str) -> str:
+        """The message with each template passed through ``translate`` (the screens pass
+        their translation; the default gives the English text)."""
+        text = fill(translate(self.reason.value), self.args)
+        if self.causes:
+            text += ": " + "; ".join(cause.text(translate) for cause in self.causes)
+        return text
+
+    def __str__(self) -> str:
+        """The English text (logs, tests, the command line)."""
+        return self.text()
+
+
+def refusal(reason: Reason, *args: object) -> Refusal:
+    """A Refusal with its arguments as the text shown (numbers as ``:g``)."""
+    return Refusal(reason, tuple(f"{a:g}" if isinstance(a, float) else str(a) for a in args))

@@ -1,0 +1,262 @@
+"""Supervision: everything that must stop the machine, read from the inputs and the drives'
+feedback each period, in one module a safety reviewer can read alone.
+
+Why pure and separate: the controller only acts on the verdict (raise the alarm, stop at
+once, latch the state); what counts as a fault, and when, is decided here, without devices
+or time, and tested case by case. The software is not the safety function: the E-stop chain
+and the guard interlock are hardware; this is the second line that stops the motion, latches
+the state and tells the operator why.
+
+Checked every period:
+
+* the E-stop chain (``estop_ok`` false: alarm E001, state EMERGENCY_STOP);
+* the guard, opened while something moves (E002);
+* every drive in FAULT: E012 if a limit switch is active, E011 for a following-error fault
+  (CiA 402 emergency code 0x8611), otherwise E010; a drive out of FAULT clears those;
+* while the automatic cycle moves (``check_feedback``): feedback present (E020), drive fault
+  (E010), drive enabled (E013), following error within its limit (E011), limit switches
+  (E012), the setpoint within the soft limits (E050), and every axis still homed (E016).
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from app.config import AxisConfig
+from app.drivers.contracts import AxisFeedback, InputImage
+from app.machine.alarms import AlarmCode
+from app.machine.states import MOVING_STATES, MachineState
+
+FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
+EMERGENCY_TEXTS = {
+    0x8611: "following error",
+    0x7300: "sensor",
+    0x8130: "heartbeat / life guard",
+    0x2310: "over-current",
+    0x3210: "DC link over-voltage",
+    0x4310: "drive over-temperature",
+    0xFF01: "limit switch",
+}
+DRIVE_FAULT_ALARMS = (AlarmCode.DRIVE_FAULT, AlarmCode.FOLLOWING_ERROR, AlarmCode.LIMIT_SWITCH)
+
+
+class ViolationKind(enum.Enum):
+    NO_FEEDBACK = "no feedback"
+    DRIVE_FAULT = "drive fault"
+    NOT_ENABLED = "drive not enabled"
+    FOLLOWING_ERROR = "following error"
+    LIMIT_POSITIVE = "positive limit switch"
+    LIMIT_NEGATIVE = "negative limit switch"
+    SOFT_LIMIT = "setpoint outside the soft limits"
+
+
+@dataclass(frozen=True)
+class Violation:
+    """One thing wrong with one axis in one period; ``message`` is ready for an alarm."""
+
+    axis: str
+    kind: ViolationKind
+    value: float
+    limit: float
+    message: str
+
+
+def check_feedback(
+    feedback: Mapping[str, AxisFeedback],
+    setpoint: Mapping[str, float] | None,
+    axes: Mapping[str, AxisConfig],
+    *,
+    motion_active: bool = True,
+    previous_setpoint: Mapping[str, float] | None = None,
+) -> list[Violation]:
+    """Everything that must stop the motion this period, per axis (pure function).
+
+    Checked for every configured axis: feedback present; drive not faulted; drive enabled
+    (only while ``motion_active``: a trajectory or jog runs); |following error| within
+    ``following_error_limit``; neither limit switch active; the setpoint (if given) within
+    the soft limits [min_position, max_position], except (with ``previous_setpoint``) a
+    setpoint outside them that is nearer the range than the previous one: the move back
+    into the range from an axis that stands outside (after homing onto a switch beyond the
+    soft limit, after a trip)."""
+    violations: list[Violation] = []
+    for name, config in axes.items():
+        fb = feedback.get(name)
+        if fb is None:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.NO_FEEDBACK,
+                    math.nan,
+                    math.nan,
+                    f"axis {name}: no feedback this period",
+                )
+            )
+            continue
+        unit = config.unit
+        if fb.faulted:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.DRIVE_FAULT,
+                    float(fb.fault_code),
+                    0.0,
+                    f"axis {name}: drive in {fb.power_state.value} (fault code "
+                    f"0x{fb.fault_code:04X})",
+                )
+            )
+        elif motion_active and not fb.enabled:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.NOT_ENABLED,
+                    float(fb.statusword),
+                    0.0,
+                    f"axis {name}: drive in {fb.power_state.value} while moving, "
+                    "operation enabled required",
+                )
+            )
+        if abs(fb.following_error) > config.following_error_limit:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.FOLLOWING_ERROR,
+                    fb.following_error,
+                    config.following_error_limit,
+                    f"axis {name}: following error {fb.following_error:.3f} {unit} exceeds "
+                    f"{config.following_error_limit:g} {unit}",
+                )
+            )
+        if fb.limit_positive:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.LIMIT_POSITIVE,
+                    fb.position,
+                    config.max_position,
+                    f"axis {name}: positive limit switch at {fb.position:.3f} {unit}",
+                )
+            )
+        if fb.limit_negative:
+            violations.append(
+                Violation(
+                    name,
+                    ViolationKind.LIMIT_NEGATIVE,
+                    fb.position,
+                    config.min_position,
+                    f"axis {name}: negative limit switch at {fb.position:.3f} {unit}",
+                )
+            )
+        if setpoint is not None and name in setpoint:
+            target = setpoint[name]
+            outside = _outside(target, config)
+            before = None if previous_setpoint is None else previous_setpoint.get(name)
+            if outside > 0.0 and (before is None or outside > _outside(before, config)):
+                bound = config.max_position if target > config.max_position else config.min_position
+                violations.append(
+                    Violation(
+                        name,
+                        ViolationKind.SOFT_LIMIT,
+                        target,
+                        bound,
+                        f"axis {name}: setpoint {target:.3f} {unit} outside the soft limits "
+                        f"{config.min_position:g} .. {config.max_position:g} {unit}",
+                    )
+                )
+    return violations
+
+
+def _outside(position: float, config: AxisConfig) -> float:
+    """How far ``position`` lies outside the soft limits (0 inside)."""
+    return max(config.min_position - position, position - config.max_position, 0.0)
+
+
+VIOLATION_ALARMS = {
+    ViolationKind.NO_FEEDBACK: AlarmCode.COMMUNICATION_LOST,
+    ViolationKind.DRIVE_FAULT: AlarmCode.DRIVE_FAULT,
+    ViolationKind.NOT_ENABLED: AlarmCode.DRIVE_NOT_ENABLED,
+    ViolationKind.FOLLOWING_ERROR: AlarmCode.FOLLOWING_ERROR,
+    ViolationKind.LIMIT_POSITIVE: AlarmCode.LIMIT_SWITCH,
+    ViolationKind.LIMIT_NEGATIVE: AlarmCode.LIMIT_SWITCH,
+    ViolationKind.SOFT_LIMIT: AlarmCode.OUTSIDE_TRAVEL,
+}
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One fault to raise: the alarm, where, and the detail for the operator."""
+
+    code: AlarmCode
+    source: str
+    detail: str = ""
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What supervision found this period. ``estop`` and ``faults`` stop the machine at once
+    and latch it; ``normal`` are the (alarm, source) conditions that read healthy again (their
+    alarms stay shown until acknowledged)."""
+
+    estop: bool
+    faults: tuple[Finding, ...]
+    normal: tuple[tuple[AlarmCode, str], ...]
+
+
+@dataclass(frozen=True)
+class Motion:
+    """What is moving this period, as the controller knows it."""
+
+    state: MachineState
+    cycle_moving: bool  # the automatic cycle's axes or devices are in motion
+    cycle_active: bool  # an automatic cycle exists (it may be waiting for a board)
+    homing: bool
+
+
+def drive_fault_code(fb: AxisFeedback) -> AlarmCode:
+    """The alarm for a drive in FAULT: a limit switch, a following error, or any other."""
+    if fb.limit_positive or fb.limit_negative:
+        return AlarmCode.LIMIT_SWITCH
+    if fb.fault_code == FOLLOWING_ERROR_FAULT:
+        return AlarmCode.FOLLOWING_ERROR
+    return AlarmCode.DRIVE_FAULT
+
+
+def supervise(
+    inputs: InputImage,
+    feedback: Mapping[str, AxisFeedback],
+    setpoint: Mapping[str, float],
+    axes: Mapping[str, AxisConfig],
+    motion: Motion,
+) -> Verdict:
+    """Everything that must stop the machine this period (see the module's list)."""
+    faults: list[Finding] = []
+    normal: list[tuple[AlarmCode, str]] = []
+    estop = not inputs.estop_ok
+    if not estop:
+        normal.append((AlarmCode.ESTOP, "E-stop chain"))
+    something_moves = motion.state in MOVING_STATES and (
+        not motion.cycle_active or motion.cycle_moving or motion.homing
+    )
+    if not inputs.guard_closed and something_moves:
+        faults.append(Finding(AlarmCode.GUARD_OPEN, "guard", "guard opened"))
+    elif inputs.guard_closed:
+        normal.append((AlarmCode.GUARD_OPEN, "guard"))
+    for name, fb in feedback.items():
+        if fb.faulted:
+            text = EMERGENCY_TEXTS.get(fb.fault_code, "")
+            detail = f"fault code 0x{fb.fault_code:04X} {text}".strip()
+            faults.append(Finding(drive_fault_code(fb), name, detail))
+        else:
+            # Out of FAULT: those conditions are normal again. E013 is an event, cleared
+            # by Reset.
+            normal.extend((code, name) for code in DRIVE_FAULT_ALARMS)
+    if motion.cycle_moving:
+        for violation in check_feedback(feedback, setpoint, axes):
+            faults.append(
+                Finding(VIOLATION_ALARMS[violation.kind], violation.axis, violation.message)
+            )
+        if not (feedback and all(fb.homed for fb in feedback.values())):
+            faults.append(Finding(AlarmCode.HOME_LOST, "axes", "an axis lost its home position"))
+    return Verdict(estop, tuple(faults), tuple(normal))
