@@ -6,8 +6,8 @@ standard library and itself; anything else is a violation, so a new package or a
 has to be given its rules here before its first import passes. In short: geometry imports
 nothing but itself; the program writers only geometry; data adds geometry; drivers add the
 configuration and the fieldbus libraries; machine adds data, drivers and the planner's
-libraries, never Qt or the screens; screens reach the machine only through its link,
-commands, snapshot and rules, and no driver backend.
+libraries, never Qt or the screens; screens and the plant connection reach the machine only
+through its link, commands, snapshot and rules, and no driver backend.
 
 Every import statement counts, including those inside functions (lazy imports, because a
 lazy import of Qt in the machine process is as wrong as a top-level one) and those only for
@@ -34,7 +34,7 @@ VERSION = "app.__version__"
 ALLOWED: dict[str, tuple[str, ...]] = {
     "__init__": (),
     "__main__": ("app.main",),
-    "config": ("app.resources",),
+    "config": ("app.resources", "app.plant.settings"),
     "resources": (),
     "logging_setup": ("platformdirs",),
     "geometry": (),
@@ -68,6 +68,21 @@ ALLOWED: dict[str, tuple[str, ...]] = {
         "app.machine.snapshot",
         "app.machine.states",
     ),
+    "plant": (
+        VERSION,
+        "app.config",
+        "app.data",
+        "app.logging_setup",
+        "app.resources",
+        "app.machine.alarms",
+        "app.machine.commands",
+        "app.machine.link",
+        "app.machine.refusals",
+        "app.machine.snapshot",
+        "app.machine.states",
+        "asyncua",
+        "cryptography",
+    ),
     "cli": (
         VERSION,
         "app.config",
@@ -75,6 +90,7 @@ ALLOWED: dict[str, tuple[str, ...]] = {
         "app.drivers",
         "app.geometry",
         "app.machine",
+        "app.plant",
         "app.programs",
         "numpy",
     ),
@@ -86,6 +102,7 @@ ALLOWED: dict[str, tuple[str, ...]] = {
         "app.data",
         "app.logging_setup",
         "app.machine",
+        "app.plant",
         "app.screens",
     ),
 }

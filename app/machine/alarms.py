@@ -141,6 +141,15 @@ CATALOGUE: dict[AlarmCode, AlarmDefinition] = {
 }
 
 
+def definition_of(code: str) -> AlarmDefinition | None:
+    """The definition of an alarm known by its code's text (from a record, a peer), or None
+    for a code this machine does not raise."""
+    try:
+        return CATALOGUE.get(AlarmCode(code))
+    except ValueError:
+        return None
+
+
 class AlarmAction(enum.Enum):
     CONDITION_ON = "condition active"
     CONDITION_OFF = "condition cleared"

@@ -90,6 +90,7 @@ class Reason(enum.Enum):
     SIMULATION_REFUSED = "the simulation refused: %1"
     HOMING_REFUSED = "homing refused: %1"
     HOMING_AROUND_BOARD = "a board is on the table: moving clear of it before homing"
+    PLANT_NOTICE = "%1"  # a job notice from the plant connection, in the plant's words
 
 
 def fill(template: str, args: tuple[str, ...]) -> str:

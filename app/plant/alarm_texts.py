@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import xml.etree.ElementTree as ET
 
-from app.machine.alarms import CATALOGUE
+from app.machine.alarms import definition_of
 from app.resources import resource_path
 
 ALARM_CONTEXT = "AlarmText"  # the context the screens use for alarm titles
@@ -34,6 +34,6 @@ def _slovenian() -> dict[str, str]:
 
 def alarm_titles(code: str) -> dict[str, str]:
     """Locale -> title of alarm ``code`` (English if a translation is missing)."""
-    definition = CATALOGUE.get(code)
+    definition = definition_of(code)
     english = definition.text if definition is not None else code
     return {"en": english, "sl": _slovenian().get(english, english)}

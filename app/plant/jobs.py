@@ -40,7 +40,7 @@ class PlantJobs:
         job = self.pending
         if job is None or snapshot is None or snapshot.state is not MachineState.READY:
             return None
-        if snapshot.allowed.get("SelectRecipe", "") != "":
+        if snapshot.allowed.get("SelectRecipe") is not None:
             return None
         self.pending = None
         self.last_done = job

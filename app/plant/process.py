@@ -25,6 +25,7 @@ from typing import Any
 
 from app.machine.commands import Command, SelectRecipe
 from app.machine.link import MachineLink
+from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.snapshot import MachineSnapshot, PlanPreview
 from app.plant.settings import OpcuaSettings
 
@@ -208,7 +209,7 @@ class PlantFeedLink:
         self._plant = plant
         self._fed_seq = -1
         self._notice = ""
-        self._covered_message = ""
+        self._covered_message: Refusal | None = None
 
     def send(self, command: Command) -> None:
         self._link.send(command)
@@ -228,7 +229,7 @@ class PlantFeedLink:
             self._notice = self._plant.notices[-1]
             self._covered_message = snapshot.message
         if self._notice and snapshot.message == self._covered_message:
-            return replace(snapshot, message=self._notice)
+            return replace(snapshot, message=refusal(Reason.PLANT_NOTICE, self._notice))
         return snapshot
 
     def plan(self, plan_id: int) -> PlanPreview | None:

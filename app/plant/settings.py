@@ -9,10 +9,25 @@ from __future__ import annotations
 
 import ipaddress
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
-if TYPE_CHECKING:
-    from app.config import Section
+
+class Section(Protocol):
+    """What these settings read of a table of the configuration (``app.config.Section``,
+    which imports this module: a protocol keeps the imports one way)."""
+
+    def error(self, name: str, value: object, allowed: str) -> Exception: ...
+
+    def number(self, name: str, default: float, minimum: float, maximum: float) -> float: ...
+
+    def integer(self, name: str, default: int, minimum: int, maximum: int) -> int: ...
+
+    def boolean(self, name: str, default: bool) -> bool: ...
+
+    def text(self, name: str, default: str, choices: tuple[str, ...] | None = None) -> str: ...
+
+    def finish(self) -> None: ...
+
 
 DEFAULT_PORT = 4840  # the IANA port of OPC UA
 

@@ -95,7 +95,7 @@ class Plant:
                 keep_cutting
                 and snapshot is not None
                 and snapshot.state is MachineState.READY
-                and snapshot.allowed.get("Start") == ""
+                and snapshot.allowed.get("Start") is None
             ):
                 self.feed.send(cmd.Start())
             time.sleep(0.01)
@@ -266,7 +266,7 @@ def test_job_methods_select_and_download_only_when_ready(plant: Plant) -> None:
         plant.feed.send(cmd.LeaveManual())
         assert plant.pump(5.0, until=lambda s: s.recipe_name == "Hogshead 300 l")
         snapshot = plant.feed.latest()
-        assert snapshot is not None and "asked by mes" in snapshot.message
+        assert snapshot is not None and "asked by mes" in str(snapshot.message)
         assert snapshot.state is MachineState.READY  # nothing started
 
         with Database.open(plant.db) as db:
