@@ -3,6 +3,7 @@
 from PySide6.QtCore import QT_TRANSLATE_NOOP
 
 TEXTS = [
+    QT_TRANSLATE_NOOP("MachineText", "%1"),
     QT_TRANSLATE_NOOP("MachineText", "%1 is not possible while %2"),
     QT_TRANSLATE_NOOP("MachineText", "%1 still in fault %2"),
     QT_TRANSLATE_NOOP("MachineText", "%1+ limit switch is active: jog %1 in the - direction only"),

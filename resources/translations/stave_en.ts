@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+84" />
+        <location filename="catalogue_strings.py" line="+85" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -415,7 +415,12 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-106" />
+        <location filename="catalogue_strings.py" line="-107" />
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>%1 is not possible while %2</source>
         <translation>%1 is not possible while %2</translation>
     </message>

@@ -13,6 +13,7 @@ import pytest
 
 from app.drivers.contracts import InputImage
 from app.machine import commands as cmd
+from app.machine.barrel_set import BoardChoice
 from app.machine.permissions import RULES, Facts, allowed_commands, may
 from app.machine.refusals import Reason, Refusal, fill, refusal
 from app.machine.states import TRANSITIONS, Event, MachineState
@@ -97,6 +98,9 @@ ROWS: list[tuple[cmd.Command, dict[str, object], Reason | None]] = [
     (cmd.SelectRecipe(1), {}, None),
     (cmd.SelectRecipe(1), {"cycle_running": True}, R.WAIT_FOR_CYCLE_END),
     (cmd.SelectRecipe(1), {"state": S.STOPPING}, R.WAIT_FOR_CYCLE_END),
+    (cmd.StartBarrel(), {}, None),
+    (cmd.StartBarrel(), {"state": S.AUTOMATIC}, R.WAIT_FOR_CYCLE_END),
+    (cmd.ChooseBoard(next(iter(BoardChoice))), {"cycle_running": True}, R.WAIT_FOR_CYCLE_END),
     (cmd.InjectFault("drive_fault", "X"), {"simulation": True}, None),
     (cmd.LoadBoard(150.0), {}, R.SIMULATION_ONLY),
     (cmd.ClearFaults(), {}, R.SIMULATION_ONLY),
