@@ -55,7 +55,7 @@ def refusal(snapshot: MachineSnapshot | None, command: str) -> str:
     """Why the machine would refuse ``command`` now ("" when allowed), in the user's language."""
     if snapshot is None:
         return machine_text("no connection to the machine")
-    return machine_text(snapshot.allowed.get(command, ""))
+    return machine_text(snapshot.allowed.get(command))
 
 
 class Screen(QWidget):

@@ -261,9 +261,9 @@ class MainScreen(Screen):
         """Resume / Abandon, where the machine allows them (a board is partly cut)."""
         allowed = self.snapshot.allowed if self.snapshot is not None else {}
         choices: list[tuple[str, object]] = []
-        if allowed.get("Resume") == "":
+        if "Resume" in allowed and allowed["Resume"] is None:
             choices.append((self.tr("Resume the cut"), Resume()))
-        if allowed.get("Abandon") == "":
+        if "Abandon" in allowed and allowed["Abandon"] is None:
             choices.append((self.tr("Abandon the board"), Abandon()))
         return choices
 
