@@ -37,7 +37,7 @@ def point_to_point_chunk(
     start = _check_xyz("start_xyz", start_xyz)
     target = _check_xyz("target_xyz", target_xyz)
     path = None
-    if math.dist(start[:2], target[:2]) > SAME_POSITION_MM:
+    if max(abs(target[0] - start[0]), abs(target[1] - start[1])) > SAME_POSITION_MM:
         path = Path((LinePiece(start[:2], target[:2]),))
     z_end = target[2] if abs(target[2] - start[2]) > SAME_POSITION_MM else start[2]
     if path is None and z_end == start[2]:

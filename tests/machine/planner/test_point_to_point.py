@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from app.machine.planner.limits import AxisLimits, MotionLimits
@@ -21,6 +21,7 @@ positions = st.tuples(st.floats(-5.0, 3900.0), st.floats(-5.0, 800.0), st.floats
 
 @settings(max_examples=60, deadline=None)
 @given(positions, positions)
+@example((0.0, 0.0, 0.0), (1e-9, 1e-9, 0.0))  # per axis the same, 1.4e-9 apart in X-Y
 def test_point_to_point_is_exact_synchronised_and_within_limits(start, target) -> None:
     if max(abs(a - b) for a, b in zip(start, target, strict=True)) <= SAME_POSITION_MM:
         with pytest.raises(PlannerError):
