@@ -160,7 +160,20 @@ def _quit_on_sigterm() -> None:
     from app.screens.application import ensure_application
 
     app = ensure_application()
-    signal.signal(signal.SIGTERM, lambda _signum, _frame: app.quit())
+
+    def terminate(_signum: int, _frame: object) -> None:
+        # The window's own safe shutdown, without asking: in the kiosk a plain quit would
+        # ask the window to close, which the kiosk answers with the "Shut down?" dialog,
+        # and systemd's stop would wait for ever.
+        from app.screens.main_window import MainWindow
+
+        windows = [w for w in app.topLevelWidgets() if isinstance(w, MainWindow)]
+        for window in windows:
+            window.shutdown()
+        if not windows:
+            app.quit()
+
+    signal.signal(signal.SIGTERM, terminate)
     timer = QTimer(app)
     timer.timeout.connect(lambda: None)
     timer.start(200)

@@ -6,6 +6,8 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 from app import __version__
 
 
@@ -45,7 +47,8 @@ def test_bad_size_is_one_line() -> None:
     assert "--size" in result.stderr and "WIDTHxHEIGHT" in result.stderr
 
 
-def test_sigterm_ends_gui_and_machine_cleanly(tmp_path) -> None:  # type: ignore[no-untyped-def]
+@pytest.mark.parametrize("mode", [[], ["--kiosk"]], ids=["window", "kiosk"])
+def test_sigterm_ends_gui_and_machine_cleanly(tmp_path, mode) -> None:  # type: ignore[no-untyped-def]
     """systemd stops the kiosk with SIGTERM: the window closes, the machine process shuts
     down through its normal path (spindle off, drives disabled) and both end."""
     import signal
@@ -54,7 +57,7 @@ def test_sigterm_ends_gui_and_machine_cleanly(tmp_path) -> None:  # type: ignore
     env = {**os.environ, "HOME": str(tmp_path), "QT_QPA_PLATFORM": "offscreen"}
     env.pop("XDG_STATE_HOME", None)
     app = subprocess.Popen(
-        [sys.executable, "-m", "app", "--db", str(tmp_path / "stave.db")],
+        [sys.executable, "-m", "app", "--db", str(tmp_path / "stave.db"), *mode],
         env=env,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
