@@ -56,6 +56,7 @@ from app.geometry.profile_kinds import ProfileKind  # noqa: E402
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath  # noqa: E402
 from app.machine.executor import ExecutorOutput, PathExecutor  # noqa: E402
 from app.machine.planner.chunk import path_box  # noqa: E402
+from app.machine.planner.keepout import TableKeepOut  # noqa: E402
 from app.machine.planner.limits import MotionLimits  # noqa: E402
 from app.machine.planner.stave_plan import StavePlan, plan_stave  # noqa: E402
 
@@ -271,6 +272,18 @@ def side_board_mask(plan: StavePlan, side: str, setpoints_xy: np.ndarray) -> np.
     return board.distances(setpoints_xy[:, 0], setpoints_xy[:, 1]) < 1e-6
 
 
+def keep_out_cost_s(toolpath: ToolPath, start: tuple[float, float, float]) -> float:
+    """What the keep-out model costs one cycle's plan: routing the approach from where the
+    axes stand (home: the tool path's first point, so no detour) to the tool path's start."""
+    first = toolpath.segments[0]
+    target = (*first.start, first.z_start_deg)
+    runs = 1000
+    t0 = time.perf_counter()
+    for _ in range(runs):
+        TableKeepOut.around_toolpath(toolpath).route(start, target)
+    return (time.perf_counter() - t0) / runs
+
+
 def stave_figures(
     stave: Stave, config: MachineConfig, limits: MotionLimits, *, simulate: bool
 ) -> dict[str, Any]:
@@ -285,6 +298,7 @@ def stave_figures(
         t0 = time.perf_counter()
         plan = plan_stave(toolpath, start, limits)
         timings.append(time.perf_counter() - t0)
+    keep_out_s = keep_out_cost_s(toolpath, start)
     outputs = run_executor(plan)
     xyz = np.array([(o.x, o.y, o.z) for o in outputs])
     cutting = np.array([o.cutting for o in outputs])
@@ -309,6 +323,7 @@ def stave_figures(
         "chord_mm": float(chord[chord_cut].max()),
         "plan_ms": statistics.median(timings) * 1e3,
         "plan_max_ms": max(timings) * 1e3,
+        "keep_out_us": keep_out_s * 1e6,
         "sim": None,
     }
     if simulate:
@@ -519,7 +534,7 @@ def print_stave_tables(rows: list[dict[str, Any]]) -> None:
     print("\nDistance from the exact tool path while cutting, mm; planning time")
     print(
         f"{'stave':42} {'setpoint':>9} {'chord':>9} {'sim board':>9} {'sim cut':>9} "
-        f"{'plan ms':>8} {'max ms':>7}"
+        f"{'plan ms':>8} {'max ms':>7} {'keep-out us':>11}"
     )
     for r in rows:
         sim = r["sim"]
@@ -528,7 +543,7 @@ def print_stave_tables(rows: list[dict[str, Any]]) -> None:
         )
         print(
             f"{r['stave']:42} {r['setpoint_mm']:9.2e} {r['chord_mm']:9.2e} {board:>9} "
-            f"{whole:>9} {r['plan_ms']:8.2f} {r['plan_max_ms']:7.2f}"
+            f"{whole:>9} {r['plan_ms']:8.2f} {r['plan_max_ms']:7.2f} {r['keep_out_us']:11.1f}"
         )
 
 
