@@ -28,7 +28,7 @@ from app.machine.states import MachineState
 from app.plant.alarm_texts import alarm_titles
 from app.plant.process import PlantFeedLink, PlantProcess
 from app.plant.settings import OpcuaSettings
-from app.plant.state_map import unit_flags, unit_state
+from app.plant.state_map import WwUnitMode, unit_flags, unit_state
 from tests.plant.node_peer import NodeClient, free_port, require_node_opcua, wait_until
 
 # Loading the OPC Foundation's models takes the server 10-20 s of CPU; on a loaded two-core
@@ -258,6 +258,15 @@ def test_job_methods_select_and_download_only_when_ready(plant: Plant) -> None:
         assert "RecipeName = 'No such barrel' is not allowed" in bad["outputs"][1]
         plant.feed.send(cmd.EnterManual())
         assert plant.pump(2.0, until=lambda s: s.state is MachineState.MANUAL)
+        # The server runs in its own process: wait until it has the MANUAL snapshot too.
+        mode = [*STATE, "Woodworking:Overview", "Woodworking:CurrentMode"]
+        assert wait_until(
+            lambda: (
+                (plant.pump(0.1) or True)
+                and node.ask("read", paths={"mode": mode})["values"]["mode"] == WwUnitMode.MANUAL
+            ),
+            30.0,
+        )
         good = node.ask("call", object=SPECIFIC, method="own:SelectRecipe", args=["Hogshead 300 l"])
         assert good["ok"] and good["outputs"][0] is True, good
         assert "waits for READY" in good["outputs"][1]
