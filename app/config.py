@@ -21,6 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from app.pendant_settings import PendantSettings, read_pendant_settings
 from app.plant.settings import OpcuaSettings, read_opcua_settings
 from app.resources import resource_path
 
@@ -199,6 +200,7 @@ class MachineConfig:
     extra: dict[str, Any] = field(default_factory=dict)
     given_keys: frozenset[str] = frozenset()
     opcua: OpcuaSettings = field(default_factory=OpcuaSettings)
+    pendant: PendantSettings = field(default_factory=PendantSettings)
 
     def with_backend(self, backend: str | None = None, gauge: str | None = None) -> MachineConfig:
         """The same configuration with the backends chosen on the command line."""
@@ -355,6 +357,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     ui.finish()
 
     opcua = read_opcua_settings(root.table("opcua"))
+    pendant = read_pendant_settings(root.table("pendant"))
 
     root.finish()
     return MachineConfig(
@@ -372,6 +375,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
         log_level,
         language,
         opcua=opcua,
+        pendant=pendant,
     )
 
 

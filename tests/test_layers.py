@@ -34,7 +34,8 @@ VERSION = "app.__version__"
 ALLOWED: dict[str, tuple[str, ...]] = {
     "__init__": (),
     "__main__": ("app.main",),
-    "config": ("app.resources", "app.plant.settings"),
+    "config": ("app.resources", "app.plant.settings", "app.pendant_settings"),
+    "pendant_settings": (),
     "resources": (),
     "logging_setup": ("platformdirs",),
     "geometry": (),

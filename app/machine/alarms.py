@@ -50,6 +50,7 @@ class AlarmCode(enum.StrEnum):
     OUTSIDE_TRAVEL = "E050"
     PLANNING_FAILED = "E051"
     APPROACH_CROSSES_BOARD = "E052"
+    HANDWHEEL_JUMP = "E060"
     INTERNAL_ERROR = "E090"
     JOG_NOT_REFRESHED = "W101"
     DEVICE_EVENT = "W102"
@@ -122,6 +123,11 @@ CATALOGUE: dict[AlarmCode, AlarmDefinition] = {
         AlarmDefinition(
             AlarmCode.APPROACH_CROSSES_BOARD,
             "Move refused: it would cross the board",
+            Severity.FAULT,
+        ),
+        AlarmDefinition(
+            AlarmCode.HANDWHEEL_JUMP,
+            "Handwheel count jumped further than a hand can turn it",
             Severity.FAULT,
         ),
         AlarmDefinition(

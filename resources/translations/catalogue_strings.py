@@ -96,6 +96,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP("AlarmText", "Emergency stop"),
     QT_TRANSLATE_NOOP("AlarmText", "Following error too large"),
     QT_TRANSLATE_NOOP("AlarmText", "Guard open during motion"),
+    QT_TRANSLATE_NOOP("AlarmText", "Handwheel count jumped further than a hand can turn it"),
     QT_TRANSLATE_NOOP("AlarmText", "Homing did not complete"),
     QT_TRANSLATE_NOOP("AlarmText", "Internal error in the machine process"),
     QT_TRANSLATE_NOOP("AlarmText", "Jog stopped: no refresh from the screen"),

@@ -117,6 +117,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Handwheel count jumped further than a hand can turn it</source>
+        <translation>Števec ročnega kolesa je skočil dlje, kot ga lahko zavrti roka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Homing did not complete</source>
         <translation>Referenciranje ni končano</translation>
     </message>
@@ -280,12 +285,12 @@
     <message>
         <location line="-9"/>
         <location line="+10"/>
-        <location line="+91"/>
+        <location line="+100"/>
         <source>Source</source>
         <translation>Vir</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="-109"/>
         <source>State</source>
         <translation>Stanje</translation>
     </message>
@@ -305,7 +310,7 @@
         <translation>Potrdi</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+34"/>
         <source>All codes</source>
         <translation>Vse kode</translation>
     </message>
@@ -415,7 +420,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-107"/>
+        <location filename="catalogue_strings.py" line="-108"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -1195,7 +1200,7 @@ izmena</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+30"/>
+        <location filename="catalogue_strings.py" line="+31"/>
         <source>Distance beyond the board&apos;s right end where the tilt changes sides</source>
         <translation>Razdalja za desnim koncem deske, kjer se nagib zamenja</translation>
     </message>
