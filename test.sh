@@ -9,5 +9,5 @@ status=0
 .venv/bin/python -m pytest -p no:cacheprovider "$@" || status=$?
 echo "== ruff" && { .venv/bin/ruff check app tests benchmarks || status=1; }
 echo "== ruff format" && { .venv/bin/ruff format --check app tests benchmarks || status=1; }
-echo "== mypy (non-GUI packages)" && { .venv/bin/mypy || status=1; }
+echo "== mypy (strict, whole app)" && { .venv/bin/mypy || status=1; }
 exit $status

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from datetime import datetime
 from pathlib import Path
+from typing import Any
 
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
@@ -539,9 +540,9 @@ class RecipesScreen(Screen):
                 str(getattr(draft, name)),
                 max_length=NAME_MAX_CHARS if name == "name" else NOTE_MAX_CHARS,
                 layout=self.context.keyboard_layout(),
-                check=lambda text, n=name: self._check(n, text),
+                check=lambda text: self._check(name, text),
             )
-            keyboard.textAccepted.connect(lambda text, n=name: self.set_field(n, text))
+            keyboard.textAccepted.connect(lambda text: self.set_field(name, text))
             self.context.open(keyboard)
         elif name in ("length_ratio", "width_ratio"):
             ratio: Ratio = getattr(draft, name)
@@ -550,11 +551,9 @@ class RecipesScreen(Screen):
                 ratio.numerator,
                 ratio.denominator,
                 self.range_text(name),
-                check=lambda num, den, n=name: self._check(n, Ratio(num, den)),
+                check=lambda num, den: self._check(name, Ratio(num, den)),
             )
-            keypad.fractionAccepted.connect(
-                lambda num, den, n=name: self.set_field(n, Ratio(num, den))
-            )
+            keypad.fractionAccepted.connect(lambda num, den: self.set_field(name, Ratio(num, den)))
             self.context.open(keypad)
         elif name == "profile_kind":
             chooser = ChoiceOverlay(
@@ -577,9 +576,9 @@ class RecipesScreen(Screen):
                 spec.maximum,
                 spec.unit,
                 decimals=3,
-                check=lambda value, n=name: self._check(n, value),
+                check=lambda value: self._check(name, value),
             )
-            keypad_family.valueAccepted.connect(lambda value, n=name: self.set_field(n, value))
+            keypad_family.valueAccepted.connect(lambda value: self.set_field(name, value))
             self.context.open(keypad_family)
         elif name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
@@ -592,10 +591,10 @@ class RecipesScreen(Screen):
                 unit,
                 decimals=3,
                 optional=optional,
-                check=lambda value, n=name: self._check(n, value),
+                check=lambda value: self._check(name, value),
             )
-            keypad_number.valueAccepted.connect(lambda value, n=name: self.set_field(n, value))
-            keypad_number.cleared.connect(lambda n=name: self.set_field(n, None))
+            keypad_number.valueAccepted.connect(lambda value: self.set_field(name, value))
+            keypad_number.cleared.connect(lambda: self.set_field(name, None))
             self.context.open(keypad_number)
 
     def _check(self, name: str, value: object) -> str:
@@ -624,7 +623,9 @@ class RecipesScreen(Screen):
             return replace(recipe, profile=with_family_value(recipe.profile, name, float(value)))
         if name == "drawing" and isinstance(value, RecipeProfile):
             return replace(recipe, profile=value)
-        return replace(recipe, **{name: value})
+        # The field is chosen by name at run time; the recipe's own validation judges the value.
+        change: dict[str, Any] = {name: value}
+        return replace(recipe, **change)
 
     def set_field(self, name: str, value: object) -> None:
         if self.draft is None:
@@ -714,14 +715,14 @@ class RecipesScreen(Screen):
             label = self.error_labels[name]
             set_text(label, "\n".join(p.message for p in problems))
             label.setVisible(bool(problems))
-            button = self.field_buttons.get(name)
-            if button is not None:
-                set_style_property(button, "invalid", "true" if problems else "false")
+            field_button = self.field_buttons.get(name)
+            if field_button is not None:
+                set_style_property(field_button, "invalid", "true" if problems else "false")
                 changed = self.current is not None and field_value(draft, name) != field_value(
                     self.current, name
                 )
                 set_style_property(
-                    button, "changed", "true" if changed and not problems else "false"
+                    field_button, "changed", "true" if changed and not problems else "false"
                 )
         self._update_buttons()
 

@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+52" />
+        <location filename="../../app/screens/texts.py" line="+62" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -1376,7 +1376,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+346" />
+        <location filename="../../app/screens/recipes_screen.py" line="+347" />
         <location line="+73" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -1534,18 +1534,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+495" />
+        <location line="+497" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-494" />
-        <location line="+544" />
+        <location line="-496" />
+        <location line="+546" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-543" />
+        <location line="-545" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1582,12 +1582,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+328" />
+        <location line="+330" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-327" />
+        <location line="-329" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -1622,7 +1622,7 @@ shift</translation>
         <translation>The name %1 is already used by recipe %2.</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+29" />
         <source>Import a side profile (DXF)</source>
         <translation>Import a side profile (DXF)</translation>
     </message>

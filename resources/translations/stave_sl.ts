@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+52"/>
+        <location filename="../../app/screens/texts.py" line="+62"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -1376,7 +1376,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+346"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+347"/>
         <location line="+73"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
@@ -1534,18 +1534,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+495"/>
+        <location line="+497"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-494"/>
-        <location line="+544"/>
+        <location line="-496"/>
+        <location line="+546"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-543"/>
+        <location line="-545"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1582,12 +1582,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+328"/>
+        <location line="+330"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-327"/>
+        <location line="-329"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -1622,7 +1622,7 @@ izmena</translation>
         <translation>Ime %1 že uporablja recept %2.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>Import a side profile (DXF)</source>
         <translation>Uvoz stranskega profila (DXF)</translation>
     </message>

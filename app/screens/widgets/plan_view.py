@@ -70,7 +70,7 @@ def _pieces(xy: np.ndarray, segment_on: np.ndarray) -> np.ndarray:
     return np.vstack(rows)
 
 
-class PlanView(pg.PlotWidget):
+class PlanView(pg.PlotWidget):  # type: ignore[misc]  # pyqtgraph ships no type information
     """Plan view of the table. ``set_plan`` draws a machine plan, ``set_paths`` a preview,
     ``set_cutter`` moves the cutter marker."""
 
