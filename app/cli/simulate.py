@@ -174,6 +174,7 @@ class CycleReport:
     cycle_time_s: float | None = None
     cut_time_s: dict[str, float] = field(default_factory=dict)
     cut_length_mm: dict[str, float] = field(default_factory=dict)
+    step_times_s: dict[str, float] = field(default_factory=dict)
     max_contour_error_mm: float = 0.0
     injection: str = ""  # what the injected fault did, in words ("" without --inject)
     barrel_stave_number: int | None = None  # with --barrel: the stave's place in the barrel
@@ -389,6 +390,7 @@ def _run_cycle(
         report.D_mm, report.R_mm = o.d_mm, o.r_mm
         report.measured_width_mm = o.width_mm
         report.cycle_time_s = piece.cycle_time_s
+        report.step_times_s = dict(piece.step_times_s)
         if report.result == "ok":
             report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
             report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
@@ -622,6 +624,7 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
         "cycle_time_s": r.cycle_time_s,
         "cut_time_s": r.cut_time_s,
         "cut_length_mm": r.cut_length_mm,
+        "step_times_s": r.step_times_s,
         "max_contour_error_mm": r.max_contour_error_mm,
         "result": r.result,
         "alarms": r.alarms,

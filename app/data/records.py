@@ -8,6 +8,8 @@ stored in UTC, so a change of daylight-saving time never reorders the history.
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
 from dataclasses import dataclass
 from datetime import UTC, datetime
@@ -78,6 +80,9 @@ class ProductionRecord:
     tilt_deg: float | None = None
     id: int | None = None
     resumed: bool = False  # the cut was interrupted and resumed (every part of both sides cut)
+    step_times_s: dict[str, float] = dataclasses.field(default_factory=dict)
+    """Where the cycle's seconds went: step name -> seconds (empty for records kept before
+    the step times were)."""
 
     def problems(self) -> list[str]:
         """Everything that makes this record unstorable, as messages naming the field."""
@@ -113,7 +118,24 @@ class ProductionRecord:
             not isinstance(self.alarm_code, str) or not self.alarm_code.strip()
         ):
             found.append(f"alarm_code: {self.alarm_code!r} is not allowed; expected a code or None")
+        found.extend(_step_time_problems(self.step_times_s))
         return found
+
+
+def _step_time_problems(step_times_s: object) -> list[str]:
+    allowed = "expected step name -> finite seconds >= 0"
+    if not isinstance(step_times_s, dict):
+        return [f"step_times_s: {step_times_s!r} is not allowed; {allowed}"]
+    return [
+        f"step_times_s[{name!r}]: {seconds!r} is not allowed; {allowed}"
+        for name, seconds in step_times_s.items()
+        if not isinstance(name, str)
+        or not name
+        or isinstance(seconds, bool)
+        or not isinstance(seconds, int | float)
+        or not math.isfinite(seconds)
+        or seconds < 0
+    ]
 
 
 @dataclass(frozen=True)
@@ -232,6 +254,7 @@ def production_fields(record: ProductionRecord) -> dict[str, Any]:
         "result": record.result.value,
         "alarm_code": record.alarm_code,
         "resumed": int(bool(record.resumed)),
+        "step_times_json": json.dumps(record.step_times_s) if record.step_times_s else None,
     }
 
 
@@ -252,7 +275,21 @@ def production_from_fields(fields: Fields) -> ProductionRecord:
         # Journal lines written before the column existed have no "resumed"; keys(), because
         # `in` on an sqlite3.Row looks at the values.
         resumed=bool(fields["resumed"]) if "resumed" in fields.keys() else False,  # noqa: SIM118
+        step_times_s=_step_times(fields),
     )
+
+
+def _step_times(fields: Fields) -> dict[str, float]:
+    """The stored step times (none in rows and journal lines from before the column)."""
+    if "step_times_json" not in fields.keys():  # noqa: SIM118
+        return {}
+    text = fields["step_times_json"]
+    if text is None:
+        return {}
+    loaded = json.loads(text)
+    if not isinstance(loaded, dict):
+        return {}
+    return {str(name): float(seconds) for name, seconds in loaded.items()}
 
 
 def alarm_fields(event: AlarmEvent) -> dict[str, Any]:

@@ -215,6 +215,14 @@ MIGRATIONS: tuple[Migration, ...] = (
             """,
         ),
     ),
+    Migration(
+        8,
+        "the time of each cycle step in production (where the seconds of a board went)",
+        (
+            "ALTER TABLE production ADD COLUMN step_times_json TEXT "
+            "CHECK (step_times_json IS NULL OR json_valid(step_times_json))",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import concurrent.futures
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from app.config import MachineConfig
@@ -23,6 +23,7 @@ from app.drivers.contracts import CommunicationError, InputImage, OutputImage, W
 from app.machine.alarms import AlarmCode
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
+from app.machine.cycle_times import StepClock, TimedStep, timed_step
 from app.machine.executor import ExecutorOutput, PathExecutor
 from app.machine.planner.continuation import Continuation
 from app.machine.planner.keepout import KeepOutRefused
@@ -44,6 +45,11 @@ _PHASE_STEPS: dict[Phase, CycleStep] = {
     Phase.POINT_TO_POINT: CycleStep.CUTTING_A,
     Phase.RETRACT: CycleStep.RETRACTING,
 }
+
+_PATH_STEPS = frozenset(
+    {CycleStep.CUTTING_A, CycleStep.REPOSITIONING, CycleStep.CUTTING_B, CycleStep.RETURNING}
+)
+"""The steps in which the axes follow the planned stave."""
 
 
 def run_now(job: PlanJob) -> concurrent.futures.Future[Any]:
@@ -78,6 +84,8 @@ class CycleOutcome:
     cut_time_b_s: float = 0.0
     cut_length_a_mm: float = 0.0
     cut_length_b_mm: float = 0.0
+    step_times_s: dict[str, float] = field(default_factory=dict)
+    """Where the cycle's time went: timed step name -> seconds (they add up to the cycle)."""
 
 
 class AutomaticCycle:
@@ -124,6 +132,7 @@ class AutomaticCycle:
         self.continuation: Continuation | None = None
         self._cut_executor: PathExecutor | None = None
         self._interrupted_phase = interrupted_phase
+        self._clock = StepClock(started_s)
 
     @property
     def is_continuation(self) -> bool:
@@ -205,6 +214,7 @@ class AutomaticCycle:
         """Advance the cycle by one period; returns the outputs to write."""
         io = self._config.io
         step = self.step
+        self._clock.book(now_s, self._timed_step())
         if (
             step is not CycleStep.WAIT_FOR_PART
             and step is not CycleStep.UNCLAMPING
@@ -284,12 +294,7 @@ class AutomaticCycle:
                 self.executor.set_override(self._override_pct)
                 self._cut_executor = self.executor
                 self._go(_PHASE_STEPS[self.executor.phase], now_s)
-        elif step in (
-            CycleStep.CUTTING_A,
-            CycleStep.REPOSITIONING,
-            CycleStep.CUTTING_B,
-            CycleStep.RETURNING,
-        ):
+        elif step in _PATH_STEPS:
             outputs = self._cut(now_s, inputs, outputs, axes)
         elif step is CycleStep.UNCLAMPING:
             outputs = replace(outputs, clamps_close=False, spindle_on=False)
@@ -298,7 +303,20 @@ class AutomaticCycle:
             ):
                 self.finished = True
                 self._step_started_s = now_s
+                self.outcome.step_times_s = self._clock.seconds()
         return outputs
+
+    def _timed_step(self) -> TimedStep:
+        """What the machine did during the period that has just passed."""
+        executor = self.executor
+        following = self.step is CycleStep.RETRACTING or self.step in _PATH_STEPS
+        if not following or executor is None or executor.done:
+            return timed_step(self.step, None, False)
+        return timed_step(self.step, executor.last_output.phase, executor.dwelling)
+
+    def step_times_s(self) -> dict[str, float]:
+        """The step times so far (the whole cycle's once it has finished)."""
+        return self._clock.seconds()
 
     def _request_width(self) -> None:
         try:

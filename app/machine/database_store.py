@@ -78,6 +78,7 @@ def production_record(piece: PieceRecord) -> ProductionRecord:
         alarm_code=piece.alarm_code,
         tilt_deg=piece.tilt_deg,
         resumed=piece.resumed,
+        step_times_s=dict(piece.step_times_s),
     )
 
 

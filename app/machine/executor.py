@@ -140,6 +140,11 @@ class PathExecutor:
         return self._last
 
     @property
+    def dwelling(self) -> bool:
+        """True while a dwell chunk holds the axes at rest on purpose."""
+        return self._state is ExecutorState.RUNNING and self._chunk.chunk.dwell_s > 0.0
+
+    @property
     def progress(self) -> float:
         """0 .. 1: the planned (100 %) time of the path covered so far."""
         if self.done:

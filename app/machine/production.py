@@ -73,6 +73,7 @@ class Production:
             result,
             alarm,
             resumed,
+            cycle.step_times_s(),
         )
         self._store.record_piece(piece)
         self.finished_cycles.append((piece, cycle))

@@ -8,7 +8,7 @@ one data layer API, ``app.data.database.Database``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Protocol
 
 from app.data.recipe import Recipe
@@ -34,6 +34,7 @@ class PieceRecord:
     result: str  # "ok", "rejected" or "aborted"
     alarm_code: str | None = None
     resumed: bool = False  # an interrupted cut, resumed and completed
+    step_times_s: dict[str, float] = field(default_factory=dict)  # timed step -> seconds
 
 
 class MachineStore(Protocol):

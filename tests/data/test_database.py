@@ -173,6 +173,9 @@ def test_forward_migration_keeps_the_data(tmp_path: Path) -> None:
         [old] = database.list_recipes()  # not a new database: no samples added
         assert (old.name, old.width_ratio) == ("Old", Ratio(3, 4))
         assert (old.barrel_minor_diameter_mm, old.target_width_mm) == (None, None)  # v5
+        database.record_piece(piece(0))
+        [record] = database.list_production(T0, T0 + timedelta(hours=1))
+        assert record.step_times_s == {}  # v8: a record without step times
         users = {u.role: u for u in database.list_users()}
         assert users == {}  # v1 files made by older software had their own users
         assert database.recipe_history() == []  # the v2 table exists and works
@@ -341,6 +344,14 @@ def test_pieces_are_recorded_listed_and_counted(db: Database) -> None:
     assert db.piece_counts(T0 + timedelta(days=1)) == (0, 3)
 
 
+def test_the_step_times_are_kept_with_the_record(db: Database) -> None:
+    steps = {"centering": 0.8, "side_a": 9.12, "waiting": 0.0}
+    stored = db.record_piece(piece(0, step_times_s=steps))
+    [listed] = db.list_production(T0, T0 + timedelta(hours=1))
+    assert listed == stored and listed.step_times_s == steps
+    assert db.integrity_problems() == []
+
+
 def test_a_naive_time_is_local_time(db: Database) -> None:
     local = datetime(2024, 5, 2, 10, 30)
     stored = db.record_piece(piece(0, time=local))
@@ -374,6 +385,9 @@ def test_a_count_survives_the_deletion_of_its_recipe(db: Database, users: dict[R
         ({"width_mm": None}, "width_mm"),  # a finished piece has a width
         ({"alarm_code": ""}, "alarm_code"),
         ({"time": "yesterday"}, "time"),
+        ({"step_times_s": {"side_a": -1.0}}, "step_times_s"),
+        ({"step_times_s": {"": 1.0}}, "step_times_s"),
+        ({"step_times_s": [1.0]}, "step_times_s"),
     ],
 )
 def test_an_invalid_record_is_refused(db: Database, changes: dict[str, object], field: str) -> None:

@@ -57,6 +57,11 @@ def test_json_for_two_cycles_and_a_trace(capsys, tmp_path: Path) -> None:
         assert 0.0 < cycle["cycle_time_s"] < 90.0
         assert cycle["cut_time_s"]["A"] > 0 and cycle["cut_length_mm"]["B"] > 950.0
         assert 0.0 < cycle["max_contour_error_mm"] < 0.1
+        steps = cycle["step_times_s"]
+        # Every period is booked to one step: they add up to the cycle, and the cut's own.
+        assert sum(steps.values()) == pytest.approx(cycle["cycle_time_s"], abs=1e-6)
+        assert steps["side_a"] == pytest.approx(cycle["cut_time_s"]["A"], abs=0.01)
+        assert {"centering", "clamping", "measuring", "approach", "side_b"} <= set(steps)
     with trace.open() as f:
         rows = list(csv.reader(f))
     assert rows[0] == [
