@@ -39,6 +39,16 @@ from datetime import UTC, datetime
 from pathlib import Path
 from types import TracebackType
 
+from app.data.barrel_records import (
+    BarrelRecord,
+    BarrelStaveRecord,
+    last_barrel_number,
+    read_barrel,
+    read_barrel_staves,
+    read_barrels,
+    store_barrel,
+    store_barrel_stave,
+)
 from app.data.errors import (
     DatabaseOpenError,
     NotFoundError,
@@ -137,7 +147,7 @@ _RECIPE_COLUMNS = (
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
-    "alarm_code, resumed, step_times_json"
+    "alarm_code, resumed, step_times_json, barrel_number, stave_number"
 )
 _ALARM_COLUMNS = "id, time, code, text, source, from_state, to_state, user_name"
 
@@ -1027,6 +1037,33 @@ class Database:
             (format_utc(shift_start),),
         ).fetchone()
         return int(row[0]), int(row[1])
+
+    # ------------------------------------------------------------------ barrels
+
+    def record_barrel(self, record: BarrelRecord) -> None:
+        """Store a barrel set, or its new state (RecordError: the record is invalid)."""
+        with self._write() as conn:
+            store_barrel(conn, record)
+
+    def record_barrel_stave(self, record: BarrelStaveRecord) -> None:
+        """Store one stave of a stored barrel, linked to its production record."""
+        with self._write() as conn:
+            store_barrel_stave(conn, record)
+
+    def get_barrel(self, number: int) -> BarrelRecord | None:
+        return read_barrel(self._conn, number)
+
+    def list_barrels(self, limit: int = 100) -> list[BarrelRecord]:
+        """The newest barrels first."""
+        return read_barrels(self._conn, limit)
+
+    def barrel_staves(self, number: int) -> list[BarrelStaveRecord]:
+        """A barrel's staves in order around it (empty for an unknown barrel)."""
+        return read_barrel_staves(self._conn, number)
+
+    def last_barrel_number(self) -> int:
+        """The highest barrel number stored (0: none yet); the machine counts on from it."""
+        return last_barrel_number(self._conn)
 
     # ------------------------------------------------------------------ machine state
 

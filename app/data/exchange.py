@@ -186,6 +186,8 @@ PRODUCTION_COLUMNS: tuple[str, ...] = (
     "tilt_deg",
     "cycle_time_s",
     "alarm_code",
+    "barrel_number",
+    "stave_number",
 )
 
 
@@ -216,6 +218,8 @@ def production_to_csv(records: Sequence[ProductionRecord], tz: tzinfo | None = N
                 _cell(record.tilt_deg, 3),
                 _cell(record.cycle_time_s, 1),
                 to_csv_text(record.alarm_code or ""),
+                _cell(record.barrel_number, 0),
+                _cell(record.stave_number, 0),
             ]
         )
     return buffer.getvalue()

@@ -23,6 +23,14 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from app.data.barrel_records import (
+    BarrelRecord,
+    BarrelStaveRecord,
+    barrel_fields,
+    barrel_from_fields,
+    barrel_stave_fields,
+    barrel_stave_from_fields,
+)
 from app.data.files import PRIVATE_FILE_MODE
 from app.data.records import (
     AlarmEvent,
@@ -69,7 +77,28 @@ class MachineStateWrite:
     value: str | None
 
 
-PendingWrite = PieceWrite | AlarmWrite | SeedParametersWrite | MachineStateWrite
+@dataclass(frozen=True)
+class BarrelWrite:
+    """A barrel set started, closed or abandoned."""
+
+    record: BarrelRecord
+
+
+@dataclass(frozen=True)
+class BarrelStaveWrite:
+    """A stave cut for a barrel (after the production record of its board)."""
+
+    record: BarrelStaveRecord
+
+
+PendingWrite = (
+    PieceWrite
+    | AlarmWrite
+    | SeedParametersWrite
+    | MachineStateWrite
+    | BarrelWrite
+    | BarrelStaveWrite
+)
 
 
 def journal_path(database_path: Path) -> Path:
@@ -85,6 +114,10 @@ def encode_write(write: PendingWrite) -> dict[str, Any]:
         return {"kind": "alarm", **alarm_fields(write.event)}
     if isinstance(write, MachineStateWrite):
         return {"kind": "machine_state", "key": write.key, "value": write.value}
+    if isinstance(write, BarrelWrite):
+        return {"kind": "barrel", **barrel_fields(write.record)}
+    if isinstance(write, BarrelStaveWrite):
+        return {"kind": "barrel_stave", **barrel_stave_fields(write.record)}
     return {"kind": "seed_parameters", "values": dict(write.values)}
 
 
@@ -100,8 +133,13 @@ def decode_write(data: dict[str, Any]) -> PendingWrite:
     if kind == "machine_state":
         value = data["value"]
         return MachineStateWrite(str(data["key"]), None if value is None else str(value))
+    if kind == "barrel":
+        return BarrelWrite(barrel_from_fields(data))
+    if kind == "barrel_stave":
+        return BarrelStaveWrite(barrel_stave_from_fields(data))
     raise ValueError(
-        f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters, machine_state"
+        f"kind = {kind!r} is not allowed: one of piece, alarm, seed_parameters, machine_state, "
+        "barrel, barrel_stave"
     )
 
 

@@ -83,6 +83,8 @@ class ProductionRecord:
     step_times_s: dict[str, float] = dataclasses.field(default_factory=dict)
     """Where the cycle's seconds went: step name -> seconds (empty for records kept before
     the step times were)."""
+    barrel_number: int | None = None  # the barrel this board was cut for (None: single staves)
+    stave_number: int | None = None  # its place in that barrel, 1 = the first stave
 
     def problems(self) -> list[str]:
         """Everything that makes this record unstorable, as messages naming the field."""
@@ -119,6 +121,24 @@ class ProductionRecord:
         ):
             found.append(f"alarm_code: {self.alarm_code!r} is not allowed; expected a code or None")
         found.extend(_step_time_problems(self.step_times_s))
+        found.extend(self._barrel_problems())
+        return found
+
+    def _barrel_problems(self) -> list[str]:
+        found = [
+            f"{field}: {value!r} is not allowed; expected a whole number >= 1 or None"
+            for field, value in (
+                ("barrel_number", self.barrel_number),
+                ("stave_number", self.stave_number),
+            )
+            if value is not None
+            and (isinstance(value, bool) or not isinstance(value, int) or value < 1)
+        ]
+        if (self.barrel_number is None) != (self.stave_number is None):
+            found.append(
+                f"stave_number: {self.stave_number!r} is not allowed with barrel_number = "
+                f"{self.barrel_number!r}; both are given or neither"
+            )
         return found
 
 
@@ -255,6 +275,8 @@ def production_fields(record: ProductionRecord) -> dict[str, Any]:
         "alarm_code": record.alarm_code,
         "resumed": int(bool(record.resumed)),
         "step_times_json": json.dumps(record.step_times_s) if record.step_times_s else None,
+        "barrel_number": record.barrel_number,
+        "stave_number": record.stave_number,
     }
 
 
@@ -276,6 +298,8 @@ def production_from_fields(fields: Fields) -> ProductionRecord:
         # `in` on an sqlite3.Row looks at the values.
         resumed=bool(fields["resumed"]) if "resumed" in fields.keys() else False,  # noqa: SIM118
         step_times_s=_step_times(fields),
+        barrel_number=_optional_field(fields, "barrel_number"),
+        stave_number=_optional_field(fields, "stave_number"),
     )
 
 
@@ -290,6 +314,11 @@ def _step_times(fields: Fields) -> dict[str, float]:
     if not isinstance(loaded, dict):
         return {}
     return {str(name): float(seconds) for name, seconds in loaded.items()}
+
+
+def _optional_field(fields: Fields, key: str) -> int | None:
+    """A column that journal lines written before it existed do not have (None then)."""
+    return optional_int(fields[key]) if key in fields.keys() else None  # noqa: SIM118
 
 
 def alarm_fields(event: AlarmEvent) -> dict[str, Any]:

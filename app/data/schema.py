@@ -223,6 +223,49 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CHECK (step_times_json IS NULL OR json_valid(step_times_json))",
         ),
     ),
+    Migration(
+        9,
+        "barrel sets and their staves; each production record names its barrel and stave",
+        (
+            """
+            CREATE TABLE barrels (
+                number INTEGER PRIMARY KEY CHECK (number > 0),
+                recipe_id INTEGER REFERENCES recipes (id) ON DELETE SET NULL,
+                recipe_name TEXT NOT NULL,
+                barrel_type TEXT NOT NULL CHECK (barrel_type IN ('round', 'oval')),
+                belly_major_mm REAL NOT NULL CHECK (belly_major_mm > 0),
+                belly_minor_mm REAL NOT NULL
+                    CHECK (belly_minor_mm > 0 AND belly_minor_mm <= belly_major_mm),
+                started_at TEXT NOT NULL,
+                finished_at TEXT,
+                state TEXT NOT NULL CHECK (state IN ('open', 'closed', 'abandoned')),
+                CHECK ((state = 'open') = (finished_at IS NULL))
+            ) STRICT
+            """,
+            """
+            CREATE TABLE barrel_staves (
+                barrel_number INTEGER NOT NULL REFERENCES barrels (number),
+                number INTEGER NOT NULL CHECK (number > 0),
+                time TEXT NOT NULL,
+                board_width_mm REAL NOT NULL CHECK (board_width_mm > 0),
+                width_mm REAL NOT NULL CHECK (width_mm > 0 AND width_mm <= board_width_mm),
+                start_angle_deg REAL NOT NULL,
+                end_angle_deg REAL NOT NULL CHECK (end_angle_deg > start_angle_deg),
+                bevel_a_deg REAL NOT NULL,
+                bevel_b_deg REAL NOT NULL,
+                closing INTEGER NOT NULL CHECK (closing IN (0, 1)),
+                production_id INTEGER REFERENCES production (id) ON DELETE SET NULL,
+                PRIMARY KEY (barrel_number, number)
+            ) STRICT
+            """,
+            "ALTER TABLE production ADD COLUMN barrel_number INTEGER "
+            "CHECK (barrel_number IS NULL OR barrel_number > 0)",
+            "ALTER TABLE production ADD COLUMN stave_number INTEGER "
+            "CHECK ((stave_number IS NULL) = (barrel_number IS NULL) "
+            "AND (stave_number IS NULL OR stave_number > 0))",
+            "CREATE INDEX production_barrel ON production (barrel_number, stave_number)",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version
@@ -238,6 +281,8 @@ REQUIRED_TABLES = frozenset(
         "alarm_events",
         "recipe_changes",
         "pin_guard",
+        "barrels",
+        "barrel_staves",
     }
 )
 

@@ -59,6 +59,7 @@ class NextStave:
     board_width_mm: float
     stave: PlacedStave
     section: BarrelSection
+    barrel_number: int = 1
 
     @property
     def target_width_mm(self) -> float | None:
@@ -134,7 +135,7 @@ class BarrelSet:
     def _next(
         self, number: int, placement: Placement, board_mm: float, stave: PlacedStave
     ) -> NextStave:
-        return NextStave(number, placement, board_mm, stave, self.section)
+        return NextStave(number, placement, board_mm, stave, self.section, self.number)
 
     def with_stave(self, next_stave: NextStave) -> BarrelSet:
         """This barrel with the stave just cut added."""

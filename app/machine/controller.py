@@ -81,6 +81,7 @@ class MachineController(CycleControl):
         recipe_id = store.first_recipe_id()
         if recipe_id is not None:
             self.recipe = store.recipe(recipe_id)
+        self._restore_barrel()
         if self.partly_cut.board is not None:
             # Keep the partly cut board clamped: unclamped, it may move and cannot be resumed.
             self.outputs = replace(self.outputs, clamps_close=True)
@@ -213,7 +214,7 @@ class MachineController(CycleControl):
             self._refuse(refusal(Reason.RECIPE_MISSING, recipe_id))
             return
         if self.recipe is None or recipe.id != self.recipe.id:
-            self.barrel = None  # a barrel is raised from one recipe's staves
+            self._drop_barrel()
         self.recipe = recipe
         self._publish_recipe_preview()
 

@@ -17,6 +17,7 @@ from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import MachineBackend, WidthGauge
 from app.geometry.limits import StaveLimits
+from app.machine.barrel_book import BarrelBook
 from app.machine.barrel_job import new_barrel, plan_barrel_board
 from app.machine.barrel_set import BarrelSet, BoardChoice
 from app.machine.board_resume import continue_job
@@ -47,12 +48,15 @@ class CycleControl(ControllerCore):
         self._finished_board_on_table = False
         self.barrel: BarrelSet | None = None  # the barrel being raised (None: single staves)
         self.board_choice: BoardChoice | None = None  # the answer to E034, for the next board
+        self.barrels = BarrelBook(store, wall_clock)
 
     def _start(self) -> None:
         assert self.recipe is not None
         recipe, params, limits_stave, limits_motion = self._planning(self.recipe)
         if self.barrel is not None and self.barrel.closed:
-            self.barrel = self.barrel.next_barrel()  # the board after a closed barrel starts one
+            # The board after a closed barrel starts the next one.
+            self.barrel = replace(self.barrel.next_barrel(), number=self.barrels.next_number())
+            self.barrels.started(self.barrel, recipe)
         barrel, choice = self.barrel, self.board_choice
 
         def plan_job(width_mm: float, start: tuple[float, float, float]) -> PlannedStave:
@@ -97,12 +101,30 @@ class CycleControl(ControllerCore):
         if self.recipe is None:
             self._refuse(Refusal(Reason.SELECT_RECIPE_FIRST))
             return
-        number = 1 if self.barrel is None else self.barrel.number + 1
-        barrel = new_barrel(self.recipe, stave_limits(self.config), number)
+        barrel = new_barrel(self.recipe, stave_limits(self.config), self.barrels.next_number())
         if barrel is None:
             self._refuse(refusal(Reason.FIXED_TILT_NO_BARREL, repr(self.recipe.name)))
             return
         self.barrel, self.board_choice = barrel, None
+        self.barrels.started(barrel, self.recipe)
+
+    def _drop_barrel(self) -> None:
+        """A barrel is raised from one recipe's staves: another recipe gives it up."""
+        if self.barrel is not None:
+            self.barrels.dropped()
+        self.barrel, self.board_choice = None, None
+
+    def _restore_barrel(self) -> None:
+        """Carry on with the barrel open before the restart, with its recipe selected, if
+        that recipe still makes this barrel (edited or deleted since: the barrel is given up)."""
+        restored = self.barrels.restore()
+        if restored is None:
+            return
+        recipe = None if restored.recipe_id is None else self.store.recipe(restored.recipe_id)
+        if recipe is None or recipe.barrel_section != restored.barrel.section:
+            self.barrels.dropped()
+            return
+        self.recipe, self.barrel = recipe, restored.barrel
 
     def _abandon(self) -> None:
         board = self.partly_cut.board
@@ -147,6 +169,7 @@ class CycleControl(ControllerCore):
             placed = cycle.planned.barrel_stave if cycle.planned is not None else None
             if self.barrel is not None and placed is not None:
                 self.barrel, self.board_choice = self.barrel.with_stave(placed), None
+                self.barrels.stave_cut(placed, self.barrel)
         self.cycle = None
         self._finished_board_on_table = True
         self._transition(Event.CYCLE_DONE)

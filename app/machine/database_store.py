@@ -28,10 +28,13 @@ from datetime import UTC, datetime
 from pathlib import Path
 
 from app.config import MachineConfig
+from app.data.barrel_records import BarrelRecord, BarrelStaveRecord
 from app.data.database import Database
 from app.data.errors import DataError, NotFoundError, StorageError
 from app.data.pending import (
     AlarmWrite,
+    BarrelStaveWrite,
+    BarrelWrite,
     MachineStateWrite,
     PendingWrite,
     PieceWrite,
@@ -52,6 +55,7 @@ from app.machine.store import PieceRecord
 log = logging.getLogger(__name__)
 
 INTERRUPTED_KEY = "interrupted_board"
+OPEN_BARREL_KEY = "open_barrel"
 
 _ALARM_STATES = {
     AlarmState.NORMAL: StoredAlarmState.NORMAL,
@@ -79,6 +83,8 @@ def production_record(piece: PieceRecord) -> ProductionRecord:
         tilt_deg=piece.tilt_deg,
         resumed=piece.resumed,
         step_times_s=dict(piece.step_times_s),
+        barrel_number=piece.barrel_number,
+        stave_number=piece.stave_number,
     )
 
 
@@ -120,6 +126,10 @@ def apply_write(db: Database, write: PendingWrite) -> None:
         db.record_alarm_event(write.event, skip_if_stored=True)
     elif isinstance(write, MachineStateWrite):
         db.set_machine_state(write.key, write.value)
+    elif isinstance(write, BarrelWrite):
+        db.record_barrel(write.record)
+    elif isinstance(write, BarrelStaveWrite):
+        db.record_barrel_stave(write.record)
     elif not db.parameter_history(limit=1):  # still untuned: nobody has changed anything since
         db.set_parameters(write.values, _service_user(db))
 
@@ -155,6 +165,12 @@ class DurableWriter:
     def pending(self) -> int:
         with self._lock:
             return len(self._pending)
+
+    def waiting_barrel_number(self) -> int:
+        """The highest barrel number of the writes not stored yet (0: none)."""
+        with self._lock:
+            numbers = [w.record.number for w, _t in self._pending if isinstance(w, BarrelWrite)]
+        return max(numbers, default=0)
 
     def waiting_state(self, key: str) -> tuple[bool, str | None]:
         """(True, value) of the newest machine-state write of ``key`` not stored yet, or
@@ -277,6 +293,22 @@ class DatabaseStore:
 
     def save_interrupted_board(self, board: InterruptedBoard | None) -> None:
         self._submit(MachineStateWrite(INTERRUPTED_KEY, None if board is None else board.to_json()))
+
+    def record_barrel(self, barrel: BarrelRecord) -> None:
+        self._submit(BarrelWrite(barrel))
+
+    def record_barrel_stave(self, stave: BarrelStaveRecord) -> None:
+        self._submit(BarrelStaveWrite(stave))
+
+    def last_barrel_number(self) -> int:
+        return max(self.db.last_barrel_number(), self.writer.waiting_barrel_number())
+
+    def open_barrel(self) -> str | None:
+        waiting, text = self.writer.waiting_state(OPEN_BARREL_KEY)
+        return text if waiting else self.db.machine_state(OPEN_BARREL_KEY)
+
+    def save_open_barrel(self, text: str | None) -> None:
+        self._submit(MachineStateWrite(OPEN_BARREL_KEY, text))
 
     def close(self) -> None:
         self.writer.flush(self.db)

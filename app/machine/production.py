@@ -61,6 +61,7 @@ class Production:
         resumed: bool = False,
     ) -> None:
         o = cycle.outcome
+        placed = cycle.planned.barrel_stave if cycle.planned is not None else None
         piece = PieceRecord(
             self._wall_clock(),
             cycle.recipe.id,
@@ -74,6 +75,8 @@ class Production:
             alarm,
             resumed,
             cycle.step_times_s(),
+            None if placed is None else placed.barrel_number,
+            None if placed is None else placed.number,
         )
         self._store.record_piece(piece)
         self.finished_cycles.append((piece, cycle))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Protocol
 
+from app.data.barrel_records import BarrelRecord, BarrelStaveRecord
 from app.data.recipe import Recipe
 from app.machine.alarms import AlarmTransition
 from app.machine.interrupted import InterruptedBoard
@@ -35,6 +36,8 @@ class PieceRecord:
     alarm_code: str | None = None
     resumed: bool = False  # an interrupted cut, resumed and completed
     step_times_s: dict[str, float] = field(default_factory=dict)  # timed step -> seconds
+    barrel_number: int | None = None  # the barrel the board was cut for (None: single staves)
+    stave_number: int | None = None  # its place in that barrel
 
 
 class MachineStore(Protocol):
@@ -68,6 +71,26 @@ class MachineStore(Protocol):
 
     def save_interrupted_board(self, board: InterruptedBoard | None) -> None:
         """Remember (or with None forget) the interrupted board."""
+        ...
+
+    def record_barrel(self, barrel: BarrelRecord) -> None:
+        """A barrel set started, closed or abandoned (stored in order with the pieces)."""
+        ...
+
+    def record_barrel_stave(self, stave: BarrelStaveRecord) -> None:
+        """A stave cut for a barrel, after the piece record of its board."""
+        ...
+
+    def last_barrel_number(self) -> int:
+        """The highest barrel number stored or waiting to be (0: none)."""
+        ...
+
+    def open_barrel(self) -> str | None:
+        """The barrel being raised when the machine stopped, as saved (survives a restart)."""
+        ...
+
+    def save_open_barrel(self, text: str | None) -> None:
+        """Remember (or with None forget) the barrel being raised."""
         ...
 
     def close(self) -> None: ...

@@ -257,6 +257,8 @@ def record_at(db: Database, moment: datetime, result: PieceResult = PieceResult.
             result=result,
             tilt_deg=10.1234,
             alarm_code=None if result is PieceResult.OK else "W_RANGE",
+            barrel_number=None if result is PieceResult.OK else 3,  # a barrel's board refused
+            stave_number=None if result is PieceResult.OK else 5,
         )
     )
 
@@ -288,6 +290,11 @@ def test_export_a_range(production: Database, tmp_path: Path) -> None:
     ]
     assert rows[0]["width_mm"] == "121.25" and rows[0]["d_mm"] == "12.5026"
     assert (rows[1]["result"], rows[1]["alarm_code"]) == ("rejected", "W_RANGE")
+    assert [(r["barrel_number"], r["stave_number"]) for r in rows] == [
+        ("", ""),
+        ("3", "5"),
+        ("", ""),
+    ]
 
 
 def test_export_a_day_in_a_given_zone(production: Database, tmp_path: Path) -> None:

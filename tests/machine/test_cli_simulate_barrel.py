@@ -6,11 +6,15 @@ from __future__ import annotations
 import csv
 import json
 import math
+from datetime import UTC, datetime
 from pathlib import Path
 
 import pytest
 
 from app.cli import main
+from app.data.barrel_records import BarrelState
+from app.data.database import Database
+from app.data.recipe import BarrelType
 from app.geometry.barrel_section import BarrelSection, plan_barrel
 from app.resources import resource_path
 
@@ -45,11 +49,11 @@ def files(tmp_path: Path) -> tuple[Path, Path]:
 
 def test_an_oval_barrel_closes_every_stave_at_its_own_bevels(capsys, files, tmp_path) -> None:
     recipe, config = files
-    trace = tmp_path / "trace.csv"
+    trace, db_path = tmp_path / "trace.csv", tmp_path / "simulation.db"
     widths = ",".join(f"{w:g}" for w in WIDTHS)
     code = main(
         ["simulate", "--recipe-file", str(recipe), "--config", str(config), "--barrel",
-         "--widths", widths, "--json", "--trace", str(trace)]
+         "--widths", widths, "--json", "--trace", str(trace), "--db", str(db_path)]
     )  # fmt: skip
     out, err = capsys.readouterr()
     assert code == 0, err
@@ -75,6 +79,18 @@ def test_an_oval_barrel_closes_every_stave_at_its_own_bevels(capsys, files, tmp_
     depth = (250.0 - 0.75 * closing.width_mm) / 2.0  # at the heads, per side
     assert last["passes"] == math.ceil(depth / 40.0) == 2  # the default depth of cut, 40 mm
     assert last["cycle_time_s"] > 1.5 * cycles[0]["cycle_time_s"]  # the extra passes cost time
+    # The database keeps the barrel, its staves as cut, and each board's barrel and stave.
+    with Database.open(db_path) as db:
+        (barrel,) = db.list_barrels()
+        assert barrel.state is BarrelState.CLOSED and barrel.barrel_type is BarrelType.OVAL
+        staves = db.barrel_staves(barrel.number)
+        pieces = {p.id: p for p in db.list_production(barrel.started_at, datetime.now(UTC))}
+    assert [s.closing for s in staves] == [False] * 8 + [True]
+    for cycle, stave in zip(cycles, staves, strict=True):
+        assert (stave.bevel_a_deg, stave.bevel_b_deg) == (cycle["tilt_a_deg"], cycle["tilt_b_deg"])
+        record = pieces[stave.production_id]
+        assert (record.barrel_number, record.stave_number) == (barrel.number, stave.number)
+    assert staves[-1].width_mm == pytest.approx(closing.width_mm, abs=1e-6)
     # The trace holds Z at +alpha_A while side A is cut and at -alpha_B on side B, per stave.
     with trace.open() as f:
         tilts = {float(row["z_cmd"]) for row in csv.DictReader(f)}  # 4 decimals
