@@ -162,6 +162,11 @@ class LoadBoard:
 
 
 @dataclass(frozen=True)
+class RemoveBoard:
+    """Simulation only: take the board off the table, as the operator does after a piece."""
+
+
+@dataclass(frozen=True)
 class SetUser:
     """The logged-in user changed (for the audit trail of alarms and records)."""
 
@@ -198,6 +203,7 @@ Command = (
     | InjectFault
     | ClearFaults
     | LoadBoard
+    | RemoveBoard
     | SetUser
     | Shutdown
 )

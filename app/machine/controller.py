@@ -41,6 +41,7 @@ from app.machine.permissions import may
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.preview import PlanPublisher
 from app.machine.process_params import motion_limits, stave_limits
+from app.machine.recipe_on_machine import restore
 from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.sim_tools import SimulationTools
 from app.machine.snapshot import MachineSnapshot, PlanPreview
@@ -78,10 +79,11 @@ class MachineController(CycleControl):
         self._previous_inputs = InputImage()
         self._last_stop_s = -1e9
         self._seq = 0
-        recipe_id = store.first_recipe_id()
-        if recipe_id is not None:
-            self.recipe = store.recipe(recipe_id)
-        self._restore_barrel()
+        restored = restore(store)
+        self.recipe, self.message = restored.recipe, restored.message
+        self._restore_barrel()  # an open barrel brings its own recipe
+        if self.recipe is not None and (restored.message is None or self.recipe != restored.recipe):
+            store.save_selected_recipe(self.recipe)
         if self.partly_cut.board is not None:
             # Keep the partly cut board clamped: unclamped, it may move and cannot be resumed.
             self.outputs = replace(self.outputs, clamps_close=True)
@@ -156,6 +158,8 @@ class MachineController(CycleControl):
                 self.sim_tools.clear()
             case cmd.LoadBoard(width_mm=width_mm):
                 self.sim_tools.replace_board(width_mm)
+            case cmd.RemoveBoard():
+                self.sim_tools.remove_board()
             case cmd.SetUser(name=name):
                 self.user = name
             case cmd.Shutdown():
@@ -216,6 +220,7 @@ class MachineController(CycleControl):
         if self.recipe is None or recipe.id != self.recipe.id:
             self._drop_barrel()
         self.recipe = recipe
+        self.store.save_selected_recipe(recipe)
         self._publish_recipe_preview()
 
     def _set_feed_override(self, percent: float) -> None:
@@ -228,8 +233,8 @@ class MachineController(CycleControl):
 
     def _reload_parameters(self) -> None:
         self.params = self.store.parameters()
-        if self.recipe is not None and self.recipe.id is not None:
-            self.recipe = self.store.recipe(self.recipe.id) or self.recipe
+        # The recipe stays the version selected: a saved recipe reaches the machine only when
+        # someone selects it again (the Recipes screen asks).
         if self.cycle is None:
             self._publish_recipe_preview()
 

@@ -52,6 +52,10 @@ class CycleControl(ControllerCore):
 
     def _start(self) -> None:
         assert self.recipe is not None
+        if self.recipe.id is not None and self.store.recipe(self.recipe.id) is None:
+            # Deleted since it was selected: it is not cut without someone choosing it.
+            self._refuse(refusal(Reason.SELECTED_RECIPE_DELETED, repr(self.recipe.name)))
+            return
         recipe, params, limits_stave, limits_motion = self._planning(self.recipe)
         if self.barrel is not None and self.barrel.closed:
             # The board after a closed barrel starts the next one.

@@ -49,6 +49,7 @@ from app.data.users import Role, User
 from app.machine.alarms import AlarmTransition
 from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.process_params import config_parameters, stave_limits
+from app.machine.recipe_on_machine import recipe_from_json, recipe_to_json
 from app.machine.snapshot import AlarmState
 from app.machine.store import PieceRecord
 
@@ -56,6 +57,7 @@ log = logging.getLogger(__name__)
 
 INTERRUPTED_KEY = "interrupted_board"
 OPEN_BARREL_KEY = "open_barrel"
+SELECTED_RECIPE_KEY = "selected_recipe"
 
 _ALARM_STATES = {
     AlarmState.NORMAL: StoredAlarmState.NORMAL,
@@ -278,9 +280,7 @@ class DatabaseStore:
         return self.writer.oldest_age_s()
 
     def interrupted_board(self) -> InterruptedBoard | None:
-        waiting, text = self.writer.waiting_state(INTERRUPTED_KEY)
-        if not waiting:
-            text = self.db.machine_state(INTERRUPTED_KEY)
+        text = self._machine_state(INTERRUPTED_KEY)
         if text is None:
             return None
         try:
@@ -304,11 +304,23 @@ class DatabaseStore:
         return max(self.db.last_barrel_number(), self.writer.waiting_barrel_number())
 
     def open_barrel(self) -> str | None:
-        waiting, text = self.writer.waiting_state(OPEN_BARREL_KEY)
-        return text if waiting else self.db.machine_state(OPEN_BARREL_KEY)
+        return self._machine_state(OPEN_BARREL_KEY)
 
     def save_open_barrel(self, text: str | None) -> None:
         self._submit(MachineStateWrite(OPEN_BARREL_KEY, text))
+
+    def _machine_state(self, key: str) -> str | None:
+        """The newest value of ``key``: the one waiting to be stored, else the stored one."""
+        waiting, text = self.writer.waiting_state(key)
+        return text if waiting else self.db.machine_state(key)
+
+    def selected_recipe(self) -> Recipe | None:
+        text = self._machine_state(SELECTED_RECIPE_KEY)
+        return None if text is None else recipe_from_json(text)
+
+    def save_selected_recipe(self, recipe: Recipe | None) -> None:
+        value = None if recipe is None else recipe_to_json(recipe)
+        self._submit(MachineStateWrite(SELECTED_RECIPE_KEY, value))
 
     def close(self) -> None:
         self.writer.flush(self.db)

@@ -173,6 +173,13 @@ def may_simulate(f: Facts) -> Verdict:
     return None if f.simulation else _no(R.SIMULATION_ONLY)
 
 
+def may_handle_board(f: Facts) -> Verdict:
+    """The simulated operator's hands: a clamped board cannot be taken off or replaced."""
+    if not f.simulation:
+        return _no(R.SIMULATION_ONLY)
+    return _no(R.UNCLAMP_BOARD_FIRST) if f.inputs.clamps_closed else None
+
+
 def always(_f: Facts) -> Verdict:
     return None
 
@@ -204,7 +211,8 @@ RULES: dict[type[cmd.Command], Rule] = {
     cmd.ResetShiftCounter: always,
     cmd.InjectFault: may_simulate,
     cmd.ClearFaults: may_simulate,
-    cmd.LoadBoard: may_simulate,
+    cmd.LoadBoard: may_handle_board,
+    cmd.RemoveBoard: may_handle_board,
     cmd.SetUser: always,
     cmd.Shutdown: always,
 }

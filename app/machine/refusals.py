@@ -60,9 +60,20 @@ class Reason(enum.Enum):
     OPEN_MANUAL_TO_JOG = "open the Manual screen to jog"
     WAIT_FOR_CYCLE_END = "wait until the cycle has ended"
     SIMULATION_ONLY = "only on the simulated machine"
+    UNCLAMP_BOARD_FIRST = "the board is clamped: unclamp it first"
     UNKNOWN_COMMAND = "unknown command"
     NOT_POSSIBLE_NOW = "%1 is not possible while %2"
     RECIPE_MISSING = "recipe %1 does not exist"
+    SELECTED_RECIPE_DELETED = (
+        "recipe %1, selected on the machine, has been deleted: select a recipe"
+    )
+    SELECTED_RECIPE_CHANGED = (
+        "recipe %1 has been changed since it was selected: the machine keeps the version it "
+        "was selected with; select it again to cut the new version"
+    )
+    SELECTED_RECIPE_UNREADABLE = (
+        "the recipe selected before the restart cannot be read: select a recipe"
+    )
     FIXED_TILT_NO_BARREL = "recipe %1 has a fixed tilt: it makes no barrel"
     FEED_OVERRIDE_RANGE = "feed override %1 % is not allowed: 0 to 120 %"
     RECONNECT_FAILED = "reconnection failed: %1"

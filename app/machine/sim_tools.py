@@ -1,4 +1,5 @@
-"""The technician's simulation menu: inject and clear faults, put a board on the table.
+"""The technician's simulation menu: inject and clear faults, put a board on the table, take
+it off.
 
 Why apart from the controller: these act on the simulated world only (through the objects
 the sim backend offers in ``MachineBackend.extras``), never on a real machine; the
@@ -31,6 +32,13 @@ class SimulationTools:
         injector = self._backend.extras.get("faults")
         if isinstance(injector, FaultInjector):
             injector.clear_injections()
+
+    def remove_board(self) -> None:
+        """Take the board off (a finished piece, or one the operator does not want cut)."""
+        remove = getattr(self._backend.extras.get("world"), "remove_board", None)
+        if callable(remove):
+            remove()
+            self._pending_board = None
 
     def replace_board(self, width_mm: float | None) -> None:
         """Take the board off now and put a new one on once the part sensor has seen the

@@ -63,6 +63,7 @@ class CycleView:
     d_mm: float | None
     r_mm: float | None
     tilt_deg: float | None
+    finished_board_on_table: bool = False  # waiting for a board while the last one lies there
 
 
 @dataclass(frozen=True)

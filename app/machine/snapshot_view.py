@@ -17,7 +17,7 @@ from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.refusals import Refusal
 from app.machine.snapshot import AxisView, CycleView, MachineSnapshot
-from app.machine.states import LATCHED_STATES, MachineState, Mode
+from app.machine.states import LATCHED_STATES, CycleStep, MachineState, Mode
 
 
 class MachineController(Protocol):
@@ -101,6 +101,10 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         d_mm=planned.profile.D if planned else None,
         r_mm=planned.profile.R if planned else None,
         tilt_deg=planned.tilt_deg if planned else None,
+        finished_board_on_table=cycle is not None
+        and cycle.step is CycleStep.WAIT_FOR_PART
+        and cycle.board_already_cut
+        and c.inputs.part_present,
     )
     recipe = c.recipe
     return MachineSnapshot(

@@ -93,4 +93,13 @@ class MachineStore(Protocol):
         """Remember (or with None forget) the barrel being raised."""
         ...
 
+    def selected_recipe(self) -> Recipe | None:
+        """The recipe version last selected on the machine, as it was selected (survives a
+        restart); RememberedRecipeError when the stored selection cannot be read."""
+        ...
+
+    def save_selected_recipe(self, recipe: Recipe | None) -> None:
+        """Remember (or with None forget) the recipe version selected on the machine."""
+        ...
+
     def close(self) -> None: ...

@@ -192,6 +192,14 @@ class MainScreen(Screen):
     def title(self) -> str:
         return self.tr("Main")
 
+    def _set_load_text(self, board_on_table: bool) -> None:
+        """The simulated operator's hands: a board on the table is replaced (LoadBoard takes
+        it off first), an empty table gets one."""
+        if board_on_table:
+            set_text(self.load_button, self.tr("Replace the board\n(simulation)"))
+        else:
+            set_text(self.load_button, self.tr("Put a board in\n(simulation)"))
+
     def retranslate(self) -> None:
         self.recipe_caption.setText(self.tr("Recipe"))
         self.list_button.setToolTip(self.tr("Choose recipe…"))
@@ -201,7 +209,7 @@ class MainScreen(Screen):
         self.stop_button.setText(self.tr("■  STOP"))
         self.home_button.setText(self.tr("Home"))
         self.reset_button.setText(self.tr("Reset"))
-        self.load_button.setText(self.tr("Put a board in\n(simulation)"))
+        self._set_load_text(self.snapshot is not None and self.snapshot.inputs.part_present)
         self.reset_shift_button.setText(self.tr("New\nshift"))
         self.shift_tile.set_caption(self.tr("Pieces this shift"))
         self.total_tile.set_caption(self.tr("Pieces total"))
@@ -326,12 +334,11 @@ class MainScreen(Screen):
         for button in (self.prev_button, self.next_button, self.list_button):
             button.setEnabled(not select_reason)
             button.setToolTip(select_reason)
-        simulation = "LoadBoard" in allowed and not allowed["LoadBoard"]
+        simulation = "InjectFault" in allowed and not allowed["InjectFault"]
         self.load_button.setVisible(simulation)
+        self._set_load_text(snapshot.inputs.part_present)
         self.load_button.setEnabled(
-            simulation
-            and snapshot.state is MachineState.AUTOMATIC
-            and not snapshot.inputs.part_present
+            simulation and snapshot.state is MachineState.AUTOMATIC and not allowed["LoadBoard"]
         )
         self._show_hint(snapshot)
 
@@ -350,7 +357,9 @@ class MainScreen(Screen):
         )
 
         cycle = snapshot.cycle
-        if cycle.step is not None:
+        if cycle.finished_board_on_table:
+            set_text(self.step_label, self.tr("Take the finished board off"))
+        elif cycle.step is not None:
             set_text(self.step_label, step_text(cycle.step))
             set_text(self.elapsed_label, format_duration(cycle.elapsed_s))
             set_text(self.remaining_label, format_duration(cycle.remaining_s))

@@ -835,13 +835,31 @@ class RecipesScreen(Screen):
         self.draft = saved
         self.reload(saved.id)
         self.context.notify(self.tr("Recipe %1 saved.").replace("%1", saved.name))
-        if (
-            self.snapshot is not None
-            and self.snapshot.recipe_id == saved.id
-            and not refusal(self.snapshot, "SelectRecipe")
-        ):
-            assert saved.id is not None  # stored recipes have an id
-            self.context.send(SelectRecipe(saved.id))  # the machine reloads it
+        if self.snapshot is not None and self.snapshot.recipe_id == saved.id:
+            self._ask_to_use_new_version(saved)
+
+    def _ask_to_use_new_version(self, saved: Recipe) -> None:
+        """The machine cuts the version it was given: a saved change reaches it only when
+        the operator says so."""
+        overlay = ConfirmOverlay(
+            self.tr("Use the new version?"),
+            self.tr(
+                "Recipe %1 is selected on the machine. Cut the saved version from the next "
+                "board on? Cancel: the machine keeps the version it has."
+            ).replace("%1", saved.name),
+            self.tr("Use the new version"),
+        )
+        overlay.finished.connect(lambda ok: self._use_new_version(saved) if ok else None)
+        self.context.open(overlay)
+
+    def _use_new_version(self, saved: Recipe) -> None:
+        reason = refusal(self.snapshot, "SelectRecipe") if self.snapshot is not None else ""
+        if reason:
+            self._message(self.tr("Not changed on the machine"), reason)
+            return
+        assert saved.id is not None  # stored recipes have an id
+        self.context.send(SelectRecipe(saved.id))
+        self.context.notify(self.tr("Recipe %1 selected.").replace("%1", saved.name))
 
     def discard(self) -> None:
         if self.current is not None:
@@ -907,6 +925,14 @@ class RecipesScreen(Screen):
     def delete_recipe(self) -> None:
         recipe = self.current
         if recipe is None or recipe.id is None:
+            return
+        if self.snapshot is not None and self.snapshot.recipe_id == recipe.id:
+            self._message(
+                self.tr("Not deleted"),
+                self.tr(
+                    "Recipe %1 is selected on the machine: select another recipe there first."
+                ).replace("%1", recipe.name),
+            )
             return
 
         def confirm() -> None:

@@ -38,7 +38,13 @@ from app.data.parameters import (
 )
 from app.data.users import Role
 from app.drivers.contracts import FAULT_KINDS
-from app.machine.commands import ClearFaults, InjectFault, LoadBoard, ReloadParameters
+from app.machine.commands import (
+    ClearFaults,
+    InjectFault,
+    LoadBoard,
+    ReloadParameters,
+    RemoveBoard,
+)
 from app.machine.snapshot import MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_clock, format_number
@@ -159,9 +165,15 @@ class SystemScreen(Screen):
         self.clear_faults_button.clicked.connect(lambda: self.context.send(ClearFaults()))
         self.load_board_button = touch_button("simLoadBoard")
         self.load_board_button.clicked.connect(self.load_board)
+        self.remove_board_button = touch_button("simRemoveBoard")
+        self.remove_board_button.clicked.connect(lambda: self.context.send(RemoveBoard()))
+        self.replace_board_button = touch_button("simReplaceBoard")
+        self.replace_board_button.clicked.connect(self.load_board)  # LoadBoard takes it off first
         sim_actions = QHBoxLayout()
         sim_actions.addWidget(self.clear_faults_button)
         sim_actions.addWidget(self.load_board_button)
+        sim_actions.addWidget(self.remove_board_button)
+        sim_actions.addWidget(self.replace_board_button)
         sim_layout = QVBoxLayout(sim_page)
         sim_layout.setContentsMargins(10, 6, 10, 8)
         sim_layout.addWidget(self.sim_title)
@@ -236,11 +248,14 @@ class SystemScreen(Screen):
         self.sim_note.setText(
             self.tr(
                 "Only on the simulated machine: inject a fault to test the alarms, clear the "
-                "injected faults (the machine stays latched until Reset), or put a board in."
+                "injected faults (the machine stays latched until Reset), put a board in, take "
+                "it off or replace it."
             )
         )
         self.clear_faults_button.setText(self.tr("Clear injected faults"))
         self.load_board_button.setText(self.tr("Put a board in"))
+        self.remove_board_button.setText(self.tr("Take the board off"))
+        self.replace_board_button.setText(self.tr("Replace the board"))
         if self.unlocked:
             self.show_group(self.group)
 
@@ -404,4 +419,9 @@ class SystemScreen(Screen):
         for fault_button in self.fault_buttons.values():
             fault_button.setEnabled(simulation)
         self.clear_faults_button.setEnabled(simulation)
-        self.load_board_button.setEnabled(simulation and not snapshot.inputs.part_present)
+        board_reason = refusal(snapshot, "LoadBoard")
+        on_table = snapshot.inputs.part_present
+        self.load_board_button.setEnabled(simulation and not on_table)
+        for button in (self.remove_board_button, self.replace_board_button):
+            button.setEnabled(simulation and on_table and not board_reason)
+            button.setToolTip(board_reason)

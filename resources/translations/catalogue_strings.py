@@ -71,14 +71,25 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "open the Manual screen to jog"),
     QT_TRANSLATE_NOOP("MachineText", "recipe %1 does not exist"),
     QT_TRANSLATE_NOOP("MachineText", "recipe %1 has a fixed tilt: it makes no barrel"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
+        "recipe %1 has been changed since it was selected: the machine keeps the version it was selected with; select it again to cut the new version",
+    ),
     QT_TRANSLATE_NOOP("MachineText", "recipe %1 no longer exists: abandon the board"),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "recipe %1, selected on the machine, has been deleted: select a recipe"
+    ),
     QT_TRANSLATE_NOOP("MachineText", "reconnection failed: %1"),
     QT_TRANSLATE_NOOP("MachineText", "release the emergency stop first"),
     QT_TRANSLATE_NOOP("MachineText", "reset done"),
     QT_TRANSLATE_NOOP("MachineText", "reset failed"),
     QT_TRANSLATE_NOOP("MachineText", "resuming the board"),
     QT_TRANSLATE_NOOP("MachineText", "select a recipe first"),
+    QT_TRANSLATE_NOOP("MachineText", "the board is clamped: unclamp it first"),
     QT_TRANSLATE_NOOP("MachineText", "the board was unclamped: it may have moved, abandon it"),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "the recipe selected before the restart cannot be read: select a recipe"
+    ),
     QT_TRANSLATE_NOOP("MachineText", "the simulation refused: %1"),
     QT_TRANSLATE_NOOP("MachineText", "unknown command"),
     QT_TRANSLATE_NOOP("MachineText", "wait until the cycle has ended"),

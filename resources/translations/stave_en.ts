@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+62" />
+        <location filename="../../app/screens/texts.py" line="+61" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+85" />
+        <location filename="catalogue_strings.py" line="+96" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -420,7 +420,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-108" />
+        <location filename="catalogue_strings.py" line="-119" />
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -696,11 +696,21 @@
     </message>
     <message>
         <location line="+1" />
+        <source>recipe %1 has been changed since it was selected: the machine keeps the version it was selected with; select it again to cut the new version</source>
+        <translation>recipe %1 has been changed since it was selected: the machine keeps the version it was selected with; select it again to cut the new version</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>recipe %1 no longer exists: abandon the board</source>
         <translation>recipe %1 no longer exists: abandon the board</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>recipe %1, selected on the machine, has been deleted: select a recipe</source>
+        <translation>recipe %1, selected on the machine, has been deleted: select a recipe</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>reconnection failed: %1</source>
         <translation>reconnection failed: %1</translation>
     </message>
@@ -731,11 +741,21 @@
     </message>
     <message>
         <location line="+1" />
+        <source>the board is clamped: unclamp it first</source>
+        <translation>the board is clamped: unclamp it first</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the board was unclamped: it may have moved, abandon it</source>
         <translation>the board was unclamped: it may have moved, abandon it</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>the recipe selected before the restart cannot be read: select a recipe</source>
+        <translation>the recipe selected before the restart cannot be read: select a recipe</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>the simulation refused: %1</source>
         <translation>the simulation refused: %1</translation>
     </message>
@@ -758,7 +778,7 @@
         <translation>Main</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+11" />
         <source>Recipe</source>
         <translation>Recipe</translation>
     </message>
@@ -798,14 +818,21 @@
         <translation>Reset</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-10" />
         <source>Put a board in
 (simulation)</source>
         <translation>Put a board in
 (simulation)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-2" />
+        <source>Replace the board
+(simulation)</source>
+        <translation>Replace the board
+(simulation)</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>New
 shift</source>
         <translation>New
@@ -897,7 +924,12 @@ shift</translation>
         <translation>No. %1</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+57" />
+        <source>Take the finished board off</source>
+        <translation>Take the finished board off</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>No cycle running</source>
         <translation>No cycle running</translation>
     </message>
@@ -1534,18 +1566,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+497" />
+        <location line="+521" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-496" />
-        <location line="+546" />
+        <location line="-520" />
+        <location line="+570" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-545" />
+        <location line="-569" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1582,12 +1614,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+330" />
+        <location line="+328" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-329" />
+        <location line="-327" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -1617,7 +1649,7 @@ shift</translation>
         <translation>Discard the changes to %1?</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+97" />
         <source>The name %1 is already used by recipe %2.</source>
         <translation>The name %1 is already used by recipe %2.</translation>
     </message>
@@ -1639,12 +1671,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+178" />
+        <location line="+196" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-176" />
+        <location line="-194" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -1695,7 +1727,28 @@ shift</translation>
         <translation>Recipe %1 saved.</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+8" />
+        <source>Use the new version?</source>
+        <translation>Use the new version?</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Recipe %1 is selected on the machine. Cut the saved version from the next board on? Cancel: the machine keeps the version it has.</source>
+        <translation>Recipe %1 is selected on the machine. Cut the saved version from the next board on? Cancel: the machine keeps the version it has.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Use the new version</source>
+        <translation>Use the new version</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Not changed on the machine</source>
+        <translation>Not changed on the machine</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+12" />
         <source>Recipe %1 selected.</source>
         <translation>Recipe %1 selected.</translation>
     </message>
@@ -1730,7 +1783,12 @@ shift</translation>
         <translation>Recipe %1 created.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
+        <source>Recipe %1 is selected on the machine: select another recipe there first.</source>
+        <translation>Recipe %1 is selected on the machine: select another recipe there first.</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Delete recipe</source>
         <translation>Delete recipe</translation>
     </message>
@@ -1740,7 +1798,8 @@ shift</translation>
         <translation>Delete recipe %1 (%2)? Its last version stays in the recipe history.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="-10" />
+        <location line="+28" />
         <source>Not deleted</source>
         <translation>Not deleted</translation>
     </message>
@@ -1963,7 +2022,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+196" />
+        <location filename="../../app/screens/system_screen.py" line="+208" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -2067,11 +2126,11 @@ Log in as technician or service to change them.</translation>
     </message>
     <message>
         <location line="+13" />
-        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</source>
-        <translation>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</translation>
+        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</source>
+        <translation>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Clear injected faults</source>
         <translation>Clear injected faults</translation>
     </message>
@@ -2079,6 +2138,16 @@ Log in as technician or service to change them.</translation>
         <location line="+1" />
         <source>Put a board in</source>
         <translation>Put a board in</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Take the board off</source>
+        <translation>Take the board off</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Replace the board</source>
+        <translation>Replace the board</translation>
     </message>
     <message>
         <location line="+59" />

@@ -4,7 +4,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+62"/>
+        <location filename="../../app/screens/texts.py" line="+61"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+85"/>
+        <location filename="catalogue_strings.py" line="+96"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -420,7 +420,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-108"/>
+        <location filename="catalogue_strings.py" line="-119"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -696,11 +696,21 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>recipe %1 has been changed since it was selected: the machine keeps the version it was selected with; select it again to cut the new version</source>
+        <translation>recept %1 je bil spremenjen, odkar je bil izbran: stroj obdrži različico, s katero je bil izbran; izberite ga znova, da bo rezal novo različico</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>recipe %1 no longer exists: abandon the board</source>
         <translation>recept %1 ne obstaja več: opustite desko</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>recipe %1, selected on the machine, has been deleted: select a recipe</source>
+        <translation>recept %1, izbran na stroju, je bil izbrisan: izberite recept</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>reconnection failed: %1</source>
         <translation>ponovna povezava ni uspela: %1</translation>
     </message>
@@ -731,11 +741,21 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>the board is clamped: unclamp it first</source>
+        <translation>deska je vpeta: najprej jo sprostite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the board was unclamped: it may have moved, abandon it</source>
         <translation>deska je bila odpeta: morda se je premaknila, opustite jo</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the recipe selected before the restart cannot be read: select a recipe</source>
+        <translation>recepta, izbranega pred ponovnim zagonom, ni mogoče prebrati: izberite recept</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>the simulation refused: %1</source>
         <translation>simulacija je zavrnila: %1</translation>
     </message>
@@ -758,7 +778,7 @@
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+11"/>
         <source>Recipe</source>
         <translation>Recept</translation>
     </message>
@@ -798,14 +818,21 @@
         <translation>Ponastavi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-10"/>
         <source>Put a board in
 (simulation)</source>
         <translation>Vstavi desko
 (simulacija)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
+        <source>Replace the board
+(simulation)</source>
+        <translation>Zamenjaj desko
+(simulacija)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>New
 shift</source>
         <translation>Nova
@@ -897,7 +924,12 @@ izmena</translation>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+57"/>
+        <source>Take the finished board off</source>
+        <translation>Odstranite obdelano desko</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>No cycle running</source>
         <translation>Cikel ne teče</translation>
     </message>
@@ -1534,18 +1566,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+497"/>
+        <location line="+521"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-496"/>
-        <location line="+546"/>
+        <location line="-520"/>
+        <location line="+570"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-545"/>
+        <location line="-569"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -1582,12 +1614,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+330"/>
+        <location line="+328"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-329"/>
+        <location line="-327"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -1617,7 +1649,7 @@ izmena</translation>
         <translation>Zavržem spremembe recepta %1?</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+97"/>
         <source>The name %1 is already used by recipe %2.</source>
         <translation>Ime %1 že uporablja recept %2.</translation>
     </message>
@@ -1639,12 +1671,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+178"/>
+        <location line="+196"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-194"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -1695,7 +1727,28 @@ izmena</translation>
         <translation>Recept %1 je shranjen.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+8"/>
+        <source>Use the new version?</source>
+        <translation>Uporabim novo različico?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recipe %1 is selected on the machine. Cut the saved version from the next board on? Cancel: the machine keeps the version it has.</source>
+        <translation>Recept %1 je izbran na stroju. Naj od naslednje deske naprej reže shranjeno različico? Prekliči: stroj obdrži različico, ki jo ima.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Use the new version</source>
+        <translation>Uporabi novo različico</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not changed on the machine</source>
+        <translation>Na stroju ni spremenjeno</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+12"/>
         <source>Recipe %1 selected.</source>
         <translation>Recept %1 je izbran.</translation>
     </message>
@@ -1730,7 +1783,12 @@ izmena</translation>
         <translation>Recept %1 je ustvarjen.</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
+        <source>Recipe %1 is selected on the machine: select another recipe there first.</source>
+        <translation>Recept %1 je izbran na stroju: najprej tam izberite drug recept.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Delete recipe</source>
         <translation>Izbriši recept</translation>
     </message>
@@ -1740,7 +1798,8 @@ izmena</translation>
         <translation>Izbrišem recept %1 (%2)? Njegova zadnja različica ostane v zgodovini receptov.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-10"/>
+        <location line="+28"/>
         <source>Not deleted</source>
         <translation>Ni izbrisano</translation>
     </message>
@@ -1963,7 +2022,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+196"/>
+        <location filename="../../app/screens/system_screen.py" line="+208"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -2067,11 +2126,11 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
     </message>
     <message>
         <location line="+13"/>
-        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), or put a board in.</source>
-        <translation>Samo na simuliranem stroju: vstavite napako za preizkus alarmov, odstranite vstavljene napake (stroj ostane zaklenjen do ponastavitve) ali vstavite desko.</translation>
+        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</source>
+        <translation>Samo na simuliranem stroju: vstavite napako za preizkus alarmov, počistite vstavljene napake (stroj ostane zaklenjen do ponastavitve), vstavite desko, jo odstranite ali zamenjajte.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Clear injected faults</source>
         <translation>Odstrani vstavljene napake</translation>
     </message>
@@ -2079,6 +2138,16 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <location line="+1"/>
         <source>Put a board in</source>
         <translation>Vstavi desko</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Take the board off</source>
+        <translation>Odstrani desko</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replace the board</source>
+        <translation>Zamenjaj desko</translation>
     </message>
     <message>
         <location line="+59"/>

@@ -70,6 +70,17 @@ def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, ta
     assert main.width_tile.value_label.text().endswith("mm")
     assert ":" in main.cycle_time_tile.value_label.text()
 
+    # The finished board is still on the table: the next Start asks for it to be taken off,
+    # and the simulated operator's hands replace it.
+    tap(start)
+    wait_for(qtbot, window, lambda s: s.cycle.finished_board_on_table)
+    assert main.step_label.text() == "Take the finished board off"
+    load = find_button(window, "loadBoardButton")
+    assert load.isEnabled() and load.text().startswith("Replace the board")
+    tap(load)
+    wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CENTERING")
+    tap(find_button(window, "stopButton"))
+
 
 def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
     home_from_main_screen(qtbot, window, tap)

@@ -9,7 +9,7 @@ from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button
+from tests.screens.helpers import enter_pin, find_button, wait_for
 
 
 def open_recipes(window, tap):
@@ -206,3 +206,46 @@ def test_preview_width_follows_the_keypad(qtbot, window, tap) -> None:
     tap(find_button(keypad, "okButton"))
     assert screen.preview.width_mm == 200.0 and screen.preview.ok
     assert screen.plan_view.outline_item.getData()[0] is not None
+
+
+def test_the_recipe_on_the_machine_is_not_deleted_and_a_saved_change_asks(
+    qtbot, window, machine, database, tap
+) -> None:
+    screen = open_recipes(window, tap)
+    on_machine = machine.controller.recipe
+    assert on_machine is not None and on_machine.id is not None
+    screen.select_recipe(on_machine.id)
+
+    tap(find_button(window, "deleteRecipe"))
+    refused = window.overlay()
+    assert isinstance(refused, MessageOverlay)  # before any PIN: nothing to authorise
+    assert on_machine.name in refused.message_label.text()
+    assert "selected on the machine" in refused.message_label.text()
+    tap(find_button(refused, "okButton"))
+    assert database.get_recipe(on_machine.id) == on_machine
+
+    def save_thickness(text: str) -> ConfirmOverlay:
+        tap(find_button(window, "field_thickness_mm"))
+        keypad = window.overlay()
+        tap(find_button(keypad, "key_clear"))
+        keys(tap, keypad, text)
+        tap(find_button(keypad, "okButton"))
+        tap(find_button(window, "saveRecipe"))
+        question = window.overlay()
+        assert isinstance(question, ConfirmOverlay)
+        assert on_machine.name in question.message_label.text()
+        return question
+
+    tap(save_thickness("33").cancel_button)  # keep the version the machine has
+    machine.run_for(0.1)
+    assert database.get_recipe(on_machine.id).thickness_mm == 33.0
+    assert machine.controller.recipe == on_machine
+
+    tap(save_thickness("34").confirm_button)
+    wait_for(
+        qtbot,
+        window,
+        lambda s: (
+            machine.controller.recipe is not None and machine.controller.recipe.thickness_mm == 34.0
+        ),
+    )
