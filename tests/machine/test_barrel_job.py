@@ -3,14 +3,18 @@ board too narrow to close the barrel is refused (E034) unless the operator chose
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from app.cli.solve import PROCESS_DEFAULTS
 from app.data.recipe import TiltMode
 from app.geometry.limits import DEFAULT_LIMITS
+from app.geometry.stave_cut import MAX_DEPTH_PARAMETER
 from app.machine.barrel_job import new_barrel, plan_barrel_board
 from app.machine.barrel_set import BoardChoice, Placement
 from app.machine.cycle_plan import PlanningError
+from app.machine.planner.trajectory import Phase
 from tests.data.test_recipe import make_recipe
 
 from .planner.support import HOME, LIMITS
@@ -18,10 +22,8 @@ from .planner.support import HOME, LIMITS
 ROUND = make_recipe(name="Round 600", tilt_mode=TiltMode.BARREL, barrel_diameter_mm=600.0)
 
 
-def plan(barrel, width_mm: float, choice: BoardChoice | None = None):
-    return plan_barrel_board(
-        barrel, choice, ROUND, width_mm, PROCESS_DEFAULTS, DEFAULT_LIMITS, LIMITS, HOME
-    )
+def plan(barrel, width_mm: float, choice: BoardChoice | None = None, params=PROCESS_DEFAULTS):
+    return plan_barrel_board(barrel, choice, ROUND, width_mm, params, DEFAULT_LIMITS, LIMITS, HOME)
 
 
 @pytest.fixture
@@ -60,3 +62,31 @@ def test_a_board_too_narrow_to_close_is_e034_unless_chosen(seventeen_staves) -> 
     assert planned.barrel_stave is not None
     assert planned.barrel_stave.placement is Placement.ORDINARY
     assert planned.cut.width_mm == 110.0
+
+
+def test_the_closing_staves_roughing_passes_run_at_the_cutting_feed(seventeen_staves) -> None:
+    """Every pass of each side - roughing and finishing - reaches the cutting feed and never
+    exceeds it; only the moves back round the board between passes are travel moves."""
+    after = seventeen_staves.with_stave(seventeen_staves.place(100.0))
+    planned = plan(after, 250.0, None, {**PROCESS_DEFAULTS, MAX_DEPTH_PARAMETER: 40.0})
+    assert planned.cut.passes == 3  # (250 - 0.8 * 76.3) / 2 = 94.5 mm a side at the heads
+    feed = LIMITS.feed_mm_s
+    for phase in (Phase.CUT_A, Phase.CUT_B):
+        runs: list[list[float]] = []  # the path speeds of each cutting run, in order
+        previous_cutting = False
+        for item in planned.plan.chunks:
+            if item.chunk.phase is not phase:
+                continue
+            if item.chunk.cutting and not previous_cutting:
+                runs.append([])
+            previous_cutting = item.chunk.cutting
+            if item.chunk.cutting:
+                steps = 200
+                for k in range(steps + 1):
+                    t = item.t_start_s + (item.t_end_s - item.t_start_s) * k / steps
+                    s = item.sample(t)
+                    runs[-1].append(math.hypot(s.vx, s.vy))
+        assert len(runs) == planned.cut.passes
+        for speeds in runs:
+            assert max(speeds) == pytest.approx(feed, rel=1e-3)
+            assert max(speeds) <= feed * (1 + 1e-9)
