@@ -1,6 +1,7 @@
 """`stave barrel`: place boards around a round or oval barrel, without the machine.
 
     stave barrel (--diameter-mm D | --axes-mm AxB) --width W [--width W ...] [--json]
+                 [--card FILE.csv]
 
 AxB are the oval's semi-axes a >= b (a 700 x 500 mm belly is --axes-mm 350x250). Prints, per
 stave, its number, width and the bevels at its first and second joint (counter-clockwise),
@@ -9,8 +10,9 @@ then the closing stave's width and bevels, or that the widths already overrun th
 "bevel_start_deg", "bevel_end_deg"}], "closing": {"width_mm", "bevel_start_deg",
 "bevel_end_deg"} | null, "perimeter_mm"}; start_angle_deg is the ellipse parameter t of the
 stave's first joint. "closing" is null when the widths overrun the perimeter (the staves that
-fit are listed), close it exactly, or leave a gap no single stave can close. Invalid input
-exits with 2 and one line on stderr.
+fit are listed), close it exactly, or leave a gap no single stave can close. `--card` also
+writes the cooper's card of the plan (``app.data.barrel_card``; the closing stave marked).
+Invalid input exits with 2 and one line on stderr.
 
 Why the values are read as text here: a bad number is then reported with the field's name and
 what is allowed, like every other invalid input, instead of argparse's usage dump.
@@ -22,6 +24,7 @@ import argparse
 import json
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 
 from app.cli.console import (
     EXIT_INVALID_INPUT,
@@ -31,6 +34,8 @@ from app.cli.console import (
     emit,
     run_parsed,
 )
+from app.data.barrel_card import CardStave, barrel_card_csv
+from app.data.files import atomic_write_text
 from app.geometry.barrel_section import (
     CLOSED_GAP_MM,
     FULL_TURN_RAD,
@@ -59,6 +64,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="a board's belly width in mm, in placing order (repeat the option)",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument(
+        "--card", metavar="FILE", help="also write the cooper's card (.csv): staves in order"
+    )
 
 
 def _number(field: str, text: str) -> object:
@@ -185,8 +193,42 @@ def run(args: argparse.Namespace) -> int:
     except CliInputError as exc:
         print(f"stave barrel: {exc}", file=sys.stderr)
         return EXIT_INVALID_INPUT
+    if args.card is not None:
+        try:
+            write_plan_card(plan, Path(args.card))
+        except (ValueError, OSError) as exc:
+            print(f"stave barrel: --card: {exc}", file=sys.stderr)
+            return EXIT_INVALID_INPUT
     emit(json.dumps(to_json_object(plan)) if args.json else format_report(plan, widths))
     return EXIT_OK
+
+
+def write_plan_card(plan: BarrelPlan, path: Path) -> None:
+    """The cooper's card of the planned staves and the closing stave (ValueError: not .csv)."""
+    if path.suffix.lower() != ".csv":
+        raise ValueError(f"{path}: the cooper's card is CSV: use a .csv file name")
+    placed = [*plan.staves, *([] if plan.closing is None else [plan.closing])]
+    closes = plan.overrun_number is None and (
+        plan.closing is not None
+        or (
+            bool(plan.staves)
+            and plan.section.chord_mm(plan.end_t_rad, FULL_TURN_RAD) < CLOSED_GAP_MM
+        )
+    )
+    staves = [
+        CardStave(
+            s.number,
+            s.width_mm,
+            s.start_angle_deg,
+            s.end_angle_deg,
+            s.bevel_start_deg,
+            s.bevel_end_deg,
+            closing=s is plan.closing,
+        )
+        for s in placed
+    ]
+    text = barrel_card_csv(staves, closed=closes, barrel_number=None, recipe_name="")
+    atomic_write_text(path, text)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

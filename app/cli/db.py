@@ -19,6 +19,7 @@ from pathlib import Path
 
 from app.cli.pin_input import NEW_PIN_ENV, PinMissing, read_pin
 from app.data.backup import backup_database, restore_database, service_pin_check
+from app.data.barrel_card import export_barrel_card
 from app.data.database import Database
 from app.data.errors import DataError
 from app.data.exchange import (
@@ -33,7 +34,7 @@ from app.data.paths import default_database_path
 from app.data.recipe import TiltMode
 from app.geometry.errors import format_value
 
-LIST_CHOICES = ("recipes", "parameters", "users")
+LIST_CHOICES = ("recipes", "parameters", "users", "barrels")
 
 
 class UsageError(Exception):
@@ -73,6 +74,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     p.add_argument("--from", dest="start", type=_datetime, metavar="ISO", help="range start")
     p.add_argument("--to", dest="end", type=_datetime, metavar="ISO", help="range end (excl.)")
     p.add_argument("--utc", action="store_true", help="days, shifts and times in UTC")
+
+    p = actions.add_parser(
+        "export-barrel",
+        parents=[common],
+        help="write a barrel's cooper's card (.csv): its staves in order, widths, bevels",
+    )
+    p.add_argument("file", type=Path, metavar="FILE")
+    p.add_argument(
+        "--barrel", type=_barrel_number, metavar="N", help="the barrel's number (default: newest)"
+    )
 
     p = actions.add_parser("backup", parents=[common], help="copy the database to a file")
     p.add_argument("destination", type=Path, metavar="FILE_OR_DIR")
@@ -206,6 +217,27 @@ def _export_production(args: argparse.Namespace) -> int:
     return 0
 
 
+def _barrel_number(text: str) -> int:
+    try:
+        number = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a barrel number (1, 2, ...)") from None
+    if number < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not allowed: a barrel number >= 1")
+    return number
+
+
+def _export_barrel(args: argparse.Namespace) -> int:
+    with _open_existing(args) as db:
+        barrel = export_barrel_card(db, args.file, args.barrel)
+        count = len(db.barrel_staves(barrel.number))
+    print(
+        f"cooper's card of barrel {barrel.number} ({barrel.state.value}, {count} staves) "
+        f"written to {args.file}"
+    )
+    return 0
+
+
 def _aware(moment: datetime, tz: tzinfo | None) -> datetime:
     """A time typed without an offset is in ``tz`` (local time if None)."""
     if moment.tzinfo is not None:
@@ -285,6 +317,12 @@ def _list(args: argparse.Namespace) -> int:
             values = db.get_parameters()
             for spec in PARAMETERS:
                 print(f"{spec.name:<22} {format_value(values[spec.name]):>10} {spec.unit}")
+        elif args.what == "barrels":
+            print("barrel  state      staves  belly mm      recipe")
+            for b in db.list_barrels():
+                belly = f"{format_value(b.belly_major_mm)} x {format_value(b.belly_minor_mm)}"
+                count = len(db.barrel_staves(b.number))
+                print(f"{b.number:<7} {b.state.value:<10} {count:>6}  {belly:<12}  {b.recipe_name}")
         else:
             for user in db.list_users():
                 print(f"{user.id:<3} {user.name:<20} {user.role.label}")
@@ -295,6 +333,7 @@ _ACTIONS = {
     "import": _import,
     "export": _export,
     "export-production": _export_production,
+    "export-barrel": _export_barrel,
     "backup": _backup,
     "restore": _restore,
     "list": _list,
