@@ -20,6 +20,7 @@ from app.drivers.canopen.backend import create_backend as create_canopen
 from app.drivers.cia402 import Cia402State
 from app.drivers.contracts import (
     AxisFeedback,
+    CommunicationError,
     DriverError,
     LifecycleError,
     LifecycleState,
@@ -31,8 +32,7 @@ from app.drivers.modbus.emulator import ModbusEmulator
 from app.drivers.sim.backend import create_backend as create_sim
 from app.drivers.sim.world import SimWorld
 from tests.drivers.canopen import conftest as can_rig
-from tests.drivers.canopen.sim_drive import SimDrive as CanDrive
-from tests.drivers.canopen.sim_drive import SimIoNode, SimNetwork
+from tests.drivers.canopen.world_nodes import WorldBus
 from tests.drivers.modbus.helpers import machine_table, tcp_modbus, with_port
 from tests.drivers.sim.rig import make_config
 
@@ -40,6 +40,7 @@ S = Cia402State
 L = LifecycleState
 OVERCURRENT = 0x2310
 AXIS = "Y"
+LINK_LOSS_PERIODS = 100  # more than any backend needs to notice a silent bus
 
 
 @dataclass
@@ -47,6 +48,7 @@ class Bench:
     """A backend under test and the simulated machine behind it."""
 
     backend: MachineBackend
+    world: SimWorld  # the machine behind the bus, the same model on every backend
     inject_fault: Callable[[str], None]
     clear_fault: Callable[[str], None]
     advance: Callable[[], None]  # lets the machine behind the bus move on by one period
@@ -82,6 +84,7 @@ def sim_bench() -> Iterator[Bench]:
     drives = world.drives
     yield Bench(
         backend,
+        world,
         lambda axis: drives[axis].inject_power_stage_fault(True),
         lambda axis: drives[axis].inject_power_stage_fault(False),
         lambda: backend.motion.advance(config.period_s),  # type: ignore[attr-defined]
@@ -90,14 +93,15 @@ def sim_bench() -> Iterator[Bench]:
         device.shutdown()
 
 
-def modbus_bench() -> Iterator[Bench]:
-    table: dict[str, Any] = machine_table(tcp_modbus(), period_ms=20.0)
+def modbus_bench(**modbus: Any) -> Iterator[Bench]:
+    table: dict[str, Any] = machine_table(tcp_modbus(**modbus), period_ms=20.0)
     emulator = ModbusEmulator(parse_config(table))
     try:
         backend = create_modbus(with_port(table, emulator.serve_tcp()))
         drives = emulator.world.drives
         yield Bench(
             backend,
+            emulator.world,
             lambda axis: drives[axis].inject_power_stage_fault(True),
             lambda axis: drives[axis].inject_power_stage_fault(False),
             lambda: None,  # the emulator advances when the drives are read
@@ -109,26 +113,34 @@ def modbus_bench() -> Iterator[Bench]:
 
 
 def canopen_bench() -> Iterator[Bench]:
+    """The world's drives and I/O as CANopen nodes on a virtual channel of this test's own."""
     channel = f"stave-contract-{uuid.uuid4().hex[:12]}"
-    network = SimNetwork(channel)
-    drives = {name: CanDrive(network, node) for name, node in can_rig.NODE_IDS.items()}
-    io = SimIoNode(network, can_rig.IO_NODE)
-    io.set_inputs(can_rig.HEALTHY_INPUTS)
-    for node in network.nodes:
-        node.boot()
+    config = parse_config(can_rig.machine_data(channel))
+    world = SimWorld.from_config(config)
+    bus = WorldBus(
+        world,
+        channel,
+        can_rig.NODE_IDS,
+        can_rig.COUNTS,
+        can_rig.IO_NODE,
+        can_rig.INPUT_BITS,
+        can_rig.OUTPUT_BITS,
+    )
+    drives = world.drives
     try:
-        backend = create_canopen(parse_config(can_rig.machine_data(channel)))
+        backend = create_canopen(config)
         canopen = backend.extras["canopen"]
         yield Bench(
             backend,
-            lambda axis: drives[axis].inject_fault(OVERCURRENT, persistent=True),
-            lambda axis: drives[axis].clear_fault_cause(),
+            world,
+            lambda axis: drives[axis].inject_power_stage_fault(True),
+            lambda axis: drives[axis].inject_power_stage_fault(False),
             lambda: None if canopen.wait_for_answers(1.0) else pytest.fail("no TPDO answers"),
         )
         for device in backend.devices():
             device.shutdown()
     finally:
-        network.close()
+        bus.close()
 
 
 BENCHES = {"sim": sim_bench, "modbus": modbus_bench, "canopen": canopen_bench}
@@ -137,6 +149,16 @@ BENCHES = {"sim": sim_bench, "modbus": modbus_bench, "canopen": canopen_bench}
 @pytest.fixture(params=list(BENCHES))
 def bench(request: pytest.FixtureRequest) -> Iterator[Bench]:
     yield from BENCHES[request.param]()
+
+
+@pytest.fixture(params=list(BENCHES))
+def silent_bench(request: pytest.FixtureRequest) -> Iterator[Bench]:
+    """A bench whose silence is noticed quickly: Modbus gives up on a reply after 100 ms
+    (silence is what the test makes, so the generous timeout would only cost time)."""
+    if request.param == "modbus":
+        yield from modbus_bench(timeout_ms=100.0, retries=0)
+    else:
+        yield from BENCHES[request.param]()
 
 
 # ---- the lifecycle ---------------------------------------------------------------------------
@@ -233,3 +255,28 @@ def test_quick_stop_holds_and_enable_goes_through_switch_on_disabled(bench: Benc
     states = []
     feedback = bench.until(lambda fb: states.append(fb.power_state) or fb.enabled, 50)
     assert feedback.enabled and S.SWITCH_ON_DISABLED in states
+
+
+def test_a_call_that_fails_with_the_link_down_latches_error(silent_bench: Bench) -> None:
+    """The call that finds the link down leaves the device in ERROR: once the link is back,
+    nothing goes on as if it had not happened until configure has reopened it."""
+    bench = silent_bench
+    motion = bench.backend.motion
+    bench.start()
+    bench.period()
+    bench.world.set_link("drives", False)
+    with pytest.raises(CommunicationError):
+        for _ in range(LINK_LOSS_PERIODS):
+            feedback = motion.read_axes()
+            motion.write_setpoints({n: fb.position for n, fb in feedback.items()})
+    assert motion.lifecycle_state is L.ERROR
+    bench.world.set_link("drives", True)
+    assert motion.lifecycle_state is L.ERROR  # still latched with the link back
+    with pytest.raises(DriverError):
+        motion.enable(AXIS)
+    for device in bench.backend.devices():  # the operator's Reset reopens what was lost
+        if device.lifecycle_state is not L.ACTIVE:
+            device.configure()
+            device.activate()
+    assert motion.lifecycle_state is L.ACTIVE
+    assert not bench.period()[AXIS].faulted

@@ -5,7 +5,8 @@ Why thin: the world is the machine; the adapters only do what a fieldbus master 
 the machine layer meets the same behaviour here as on Modbus or CANopen:
 
 - The lifecycle is :class:`~app.drivers.lifecycle.ManagedLifecycle`'s, as on every backend;
-  a transition while the link is down fails with CommunicationError and leaves ERROR.
+  a transition or a call while the link is down fails with CommunicationError and leaves
+  ERROR.
   Reading is allowed when INACTIVE or ACTIVE; every command and write only when ACTIVE,
   otherwise :class:`LifecycleError`, except disable and quick stop, which are always taken.
   On activation the command positions are set to the measured ones.
@@ -99,16 +100,31 @@ class _Adapter(ManagedLifecycle):
         self._link = link
         self._device = device
         self._links_seen = len(world.link_log)
+        self._lost = False  # ERROR latched by a lost link: calls say so until configure
 
     def _link_up(self) -> bool:
         return self._world.link_ok(self._link)
 
     def _require_link(self, what: str) -> None:
+        """A call that finds the link down latches ERROR (only configure may follow), as a
+        fieldbus backend does when a call loses its link."""
         if not self._link_up():
+            self._latch_error()
+            self._lost = self._state is L.ERROR
             raise CommunicationError(self._device, f"{what}: no reply (link lost)")
+
+    def _require(self, what: str, *states: LifecycleState) -> None:
+        """After a lost link a call fails as a lost link (CommunicationError), not as a
+        lifecycle misuse, until configure reopens it (as on Modbus and CANopen)."""
+        if self._state is L.ERROR and self._lost:
+            raise CommunicationError(
+                self._device, f"{what}: the link was lost; a reset must reconfigure the backend"
+            )
+        super()._require(what, *states)
 
     def _on_configure(self) -> None:
         self._require_link("configure failed")
+        self._lost = False
 
     def _on_activate(self) -> None:
         self._require_link("activate failed")

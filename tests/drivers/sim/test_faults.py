@@ -11,6 +11,7 @@ from app.drivers.contracts import (
     CommunicationError,
     DeviceEventKind,
     FaultInjector,
+    LifecycleState,
     OutputImage,
 )
 from app.drivers.sim.faults import fault_targets
@@ -186,8 +187,10 @@ def test_comms_loss_makes_every_call_fail_and_drives_fault_on_heartbeat() -> Non
         lambda: rig.motion.fault_reset("X"),
         lambda: rig.io.write_outputs(OutputImage()),
     ):
-        with pytest.raises(CommunicationError, match="no reply"):
+        with pytest.raises(CommunicationError, match=r"no reply|the link was lost"):
             call()
+    assert rig.motion.lifecycle_state is LifecycleState.ERROR  # latched by the first call
+    assert rig.io.lifecycle_state is LifecycleState.ERROR
     assert [e.kind for e in rig.motion.events()] == [DeviceEventKind.COMMUNICATION_LOST]
     assert [e.kind for e in rig.io.events()] == [DeviceEventKind.COMMUNICATION_LOST]
     rig.motion.advance(0.05)
@@ -195,11 +198,16 @@ def test_comms_loss_makes_every_call_fail_and_drives_fault_on_heartbeat() -> Non
     rig.motion.advance(0.1)
     assert rig.world.outputs == OutputImage()  # ...then switches every output off
     rig.faults.clear_injections()
-    feedback = rig.motion.read_axes()
-    assert all(fb.faulted and fb.fault_code == 0x8130 for fb in feedback.values())
+    with pytest.raises(CommunicationError, match="the link was lost"):
+        rig.motion.read_axes()  # the link is back, the loss stays latched until configure
     events = rig.motion.events()  # the EMCYs were sent while nobody listened: lost
     assert [e.kind for e in events] == [DeviceEventKind.COMMUNICATION_RESTORED]
     assert [e.kind for e in rig.io.events()] == [DeviceEventKind.COMMUNICATION_RESTORED]
+    for device in (rig.motion, rig.io):  # the operator's reset reopens the links
+        device.configure()
+        device.activate()
+    feedback = rig.motion.read_axes()
+    assert all(fb.faulted and fb.fault_code == 0x8130 for fb in feedback.values())
     for axis in "XYZ":
         reset(rig, axis)
     assert all(rig.state(a) is S.SWITCH_ON_DISABLED for a in "XYZ")
