@@ -18,10 +18,11 @@ debs=(python3-venv libgl1 libegl1 libopengl0 libxkbcommon0 libxkbcommon-x11-0 li
       libxcb-randr0 libxcb-render-util0 libxcb-shape0 libxcb-xinerama0 libxcb-xkb1
       libxcb-xfixes0 libx11-xcb1 fonts-dejavu-core)
 # The test set-up also needs peers we did not write: LinuxCNC's standalone G-code interpreter
-# rs274 (linuxcnc-uspace; without its recommends, which would pull in a real-time kernel).
+# rs274 (linuxcnc-uspace; without its recommends, which would pull in a real-time kernel), and
+# an X server without a window manager (xvfb, x11-utils's xwininfo) for the kiosk test.
 dev_debs=()
 if [ "$extra" = dev ]; then
-  dev_debs=(linuxcnc-uspace)
+  dev_debs=(linuxcnc-uspace xvfb x11-utils)
 fi
 if command -v dpkg >/dev/null 2>&1; then
   missing=()

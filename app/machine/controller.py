@@ -37,6 +37,7 @@ from app.machine.cycle_control import CycleControl
 from app.machine.executor import PathExecutor
 from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.homing_clearance import homing_clearance
+from app.machine.io_table import io_table
 from app.machine.permissions import may
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.preview import PlanPublisher
@@ -75,6 +76,7 @@ class MachineController(CycleControl):
         self.plans = PlanPublisher()
         self.sim_tools = SimulationTools(backend)
         self.user = ""
+        self.io_points = io_table(config)
         self._commands: collections.deque[cmd.Command] = collections.deque()
         self._previous_inputs = InputImage()
         self._last_stop_s = -1e9

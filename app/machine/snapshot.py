@@ -67,6 +67,16 @@ class CycleView:
 
 
 @dataclass(frozen=True)
+class IoPoint:
+    """One digital input or output of the machine and where it is wired on the configured
+    backend, for the technicians' I/O page (its state is in ``inputs`` / ``outputs``)."""
+
+    signal: str  # the field of InputImage or OutputImage
+    output: bool
+    address: str  # e.g. "unit 3, discrete input 10004"; "" when the signal is not wired
+
+
+@dataclass(frozen=True)
 class PlanPreview:
     """What the plan view draws: the stave outline and the tool path, in machine X/Y."""
 
@@ -103,6 +113,7 @@ class MachineSnapshot:
     # command name (the class name in app.machine.commands) -> None if allowed now, or why not
     allowed: dict[str, Refusal | None] = field(default_factory=dict)
     message: Refusal | None = None  # the last refusal or notice for the operator
+    io_points: tuple[IoPoint, ...] = ()  # every input, then every output, in image order
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

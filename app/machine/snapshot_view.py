@@ -16,7 +16,7 @@ from app.machine.homing import HomingSequence
 from app.machine.manual import ManualControl
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.refusals import Refusal
-from app.machine.snapshot import AxisView, CycleView, MachineSnapshot
+from app.machine.snapshot import AxisView, CycleView, IoPoint, MachineSnapshot
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState, Mode
 
 
@@ -40,6 +40,7 @@ class MachineController(Protocol):
     homing: HomingSequence | None
     feed_override_pct: float
     message: Refusal | None
+    io_points: tuple[IoPoint, ...]
 
     @property
     def pieces_shift(self) -> int: ...
@@ -132,4 +133,5 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         jog_z=c.manual.speed("Z"),
         allowed=allowed_commands(c.facts()),
         message=c.message,
+        io_points=c.io_points,
     )

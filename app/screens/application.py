@@ -49,6 +49,18 @@ def create_main_window(
     return window
 
 
+def show_full_screen(window: QMainWindow) -> None:
+    """Cover the whole screen the window is on, with or without a window manager.
+
+    Why the geometry first: full screen is a request to the window manager (the EWMH
+    ``_NET_WM_STATE_FULLSCREEN`` on X11); a kiosk X server often runs none, and then the request
+    goes unanswered and the window stays at its default size in a corner. A frameless window
+    placed over the screen's geometry covers it either way, and a window manager that is
+    there makes it full screen as asked."""
+    window.setGeometry(window.screen().geometry())
+    window.showFullScreen()
+
+
 def run_gui(
     link: MachineLink, database: Database, *, language: str = "en", kiosk: bool = False
 ) -> int:
@@ -59,7 +71,7 @@ def run_gui(
     assert isinstance(window, MainWindow)
     window.shutdownRequested.connect(lambda: app.exit(window.exit_code))
     if kiosk:
-        window.showFullScreen()
+        show_full_screen(window)
     else:
         window.show()
     code = app.exec()

@@ -42,6 +42,8 @@ from app.screens.formatting import format_duration, format_optional
 from app.screens.texts import step_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.io_strip import LAMP_PX as IO_LAMP_PX
+from app.screens.widgets.io_strip import IoStrip
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import AxisReadout, ValueTile, set_text, styled_label
 
@@ -168,6 +170,9 @@ class MainScreen(Screen):
         cycle_layout.addWidget(self.progress, 2, 0, 1, 4)
         cycle_layout.setColumnStretch(0, 1)
 
+        self.io_strip = IoStrip()
+        self.io_strip.button.clicked.connect(lambda: self.context.navigate("io"))
+
         self.plan_view = PlanView()
         self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self.plan_view.setMinimumHeight(150)
@@ -175,6 +180,7 @@ class MainScreen(Screen):
         right = QVBoxLayout()
         right.setSpacing(8)
         right.addLayout(axes)
+        right.addWidget(self.io_strip)
         right.addLayout(counters)
         right.addWidget(cycle_panel)
         right.addWidget(self.plan_view, 1)
@@ -217,6 +223,8 @@ class MainScreen(Screen):
         self.cycle_time_tile.set_caption(self.tr("Last cycle"))
         self.elapsed_caption.setText(self.tr("Elapsed"))
         self.remaining_caption.setText(self.tr("Remaining"))
+        self.io_strip.button.setToolTip(self.tr("All inputs and outputs"))
+        self.io_strip.retranslate()
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
         self._show_recipe_number()
@@ -371,11 +379,13 @@ class MainScreen(Screen):
             set_text(self.remaining_label, "—")
             self.progress.setValue(0)
 
+        self.io_strip.show_inputs(snapshot.inputs, force)
         self._update_plan(snapshot)
 
     def apply_scale(self, scale: float) -> None:
         self.left_widget.setFixedWidth(round(LEFT_WIDTH_PX * scale))
         self.plan_view.set_scale(scale)
+        self.io_strip.set_lamp_diameter(round(IO_LAMP_PX * scale))
 
     def _enable(self, button: QPushButton, command: str) -> None:
         reason = refusal(self.snapshot, command)

@@ -22,6 +22,7 @@ from app.screens.alarms_screen import AlarmsScreen
 from app.screens.base import Screen, ScreenContext
 from app.screens.chrome import AlarmBanner, NavBar, TopBar
 from app.screens.i18n import LANGUAGES, LanguageManager
+from app.screens.io_screen import IoScreen
 from app.screens.main_screen import MainScreen
 from app.screens.manual_screen import ManualScreen
 from app.screens.pin_check import PinChecker
@@ -96,7 +97,14 @@ class MainWindow(QMainWindow):
             require=self.require,
         )
         self.screens: dict[str, Screen] = {}
-        for screen_class in (MainScreen, RecipesScreen, SystemScreen, ManualScreen, AlarmsScreen):
+        for screen_class in (
+            MainScreen,
+            RecipesScreen,
+            SystemScreen,
+            ManualScreen,
+            AlarmsScreen,
+            IoScreen,
+        ):
             screen = screen_class(self.context)
             self.screens[screen.key] = screen
             self.stack.addWidget(screen)

@@ -418,6 +418,233 @@
     </message>
 </context>
 <context>
+    <name>IoScreen</name>
+    <message>
+        <location filename="../../app/screens/io_screen.py" line="+84" />
+        <location line="+3" />
+        <source>Inputs and outputs</source>
+        <translation>Inputs and outputs</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inputs</source>
+        <translation>Inputs</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>not wired</source>
+        <translation>not wired</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>simulated</source>
+        <translation>simulated</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Backend: %1</source>
+        <translation>Backend: %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+</context>
+<context>
+    <name>IoSignals</name>
+    <message>
+        <location filename="../../app/screens/io_status.py" line="+25" />
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamps</source>
+        <translation>Clamps</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering</source>
+        <translation>Centering</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Board</source>
+        <translation>Board</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guard</source>
+        <translation>Guard</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>E-stop chain</source>
+        <translation>E-stop chain</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>closed</source>
+        <translation>closed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>open</source>
+        <translation>open</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OPEN</source>
+        <translation>OPEN</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>moving</source>
+        <translation>moving</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>extended</source>
+        <translation>extended</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>retracted</source>
+        <translation>retracted</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>present</source>
+        <translation>present</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>BROKEN</source>
+        <translation>BROKEN</translation>
+    </message>
+    <message>
+        <location line="+63" />
+        <source>Board present</source>
+        <translation>Board present</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering extended</source>
+        <translation>Centering extended</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering retracted</source>
+        <translation>Centering retracted</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamps closed</source>
+        <translation>Clamps closed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamps open</source>
+        <translation>Clamps open</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spindle running</source>
+        <translation>Spindle running</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Guard closed</source>
+        <translation>Guard closed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>E-stop chain closed</source>
+        <translation>E-stop chain closed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Start push button</source>
+        <translation>Start push button</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Stop push button</source>
+        <translation>Stop push button</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Reset push button</source>
+        <translation>Reset push button</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Extend centering</source>
+        <translation>Extend centering</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Close clamps</source>
+        <translation>Close clamps</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spindle contactor</source>
+        <translation>Spindle contactor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Green lamp</source>
+        <translation>Green lamp</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Yellow lamp</source>
+        <translation>Yellow lamp</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Red lamp</source>
+        <translation>Red lamp</translation>
+    </message>
+</context>
+<context>
     <name>MachineText</name>
     <message>
         <location filename="catalogue_strings.py" line="-119" />
@@ -773,7 +1000,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+193" />
+        <location filename="../../app/screens/main_screen.py" line="+199" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -869,7 +1096,12 @@ shift</translation>
         <translation>Remaining</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
+        <source>All inputs and outputs</source>
+        <translation>All inputs and outputs</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>NOT HOMED</source>
         <translation>NOT HOMED</translation>
     </message>
@@ -937,7 +1169,7 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+161" />
+        <location filename="../../app/screens/main_window.py" line="+169" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>

@@ -418,6 +418,233 @@
     </message>
 </context>
 <context>
+    <name>IoScreen</name>
+    <message>
+        <location filename="../../app/screens/io_screen.py" line="+84"/>
+        <location line="+3"/>
+        <source>Inputs and outputs</source>
+        <translation>Vhodi in izhodi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs</source>
+        <translation>Vhodi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outputs</source>
+        <translation>Izhodi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Back</source>
+        <translation>Nazaj</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>not wired</source>
+        <translation>ni priključen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>simulated</source>
+        <translation>simulirano</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Backend: %1</source>
+        <translation>Krmilje: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>ON</source>
+        <translation>VKLOP</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>off</source>
+        <translation>izklop</translation>
+    </message>
+</context>
+<context>
+    <name>IoSignals</name>
+    <message>
+        <location filename="../../app/screens/io_status.py" line="+25"/>
+        <source>Spindle</source>
+        <translation>Vreteno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clamps</source>
+        <translation>Vpenjala</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centering</source>
+        <translation>Centriranje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Board</source>
+        <translation>Deska</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Guard</source>
+        <translation>Zaščita</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E-stop chain</source>
+        <translation>Veriga zasilne zaustavitve</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>running</source>
+        <translation>teče</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped</source>
+        <translation>stoji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>closed</source>
+        <translation>zaprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open</source>
+        <translation>odprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OPEN</source>
+        <translation>ODPRTA</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>moving</source>
+        <translation>v gibanju</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>extended</source>
+        <translation>izvlečeno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>retracted</source>
+        <translation>uvlečeno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>present</source>
+        <translation>vložena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>ni je</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OK</source>
+        <translation>v redu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>BROKEN</source>
+        <translation>PREKINJENA</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Board present</source>
+        <translation>Deska vložena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centering extended</source>
+        <translation>Centriranje izvlečeno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centering retracted</source>
+        <translation>Centriranje uvlečeno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clamps closed</source>
+        <translation>Vpenjala zaprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clamps open</source>
+        <translation>Vpenjala odprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spindle running</source>
+        <translation>Vreteno teče</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Guard closed</source>
+        <translation>Zaščita zaprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E-stop chain closed</source>
+        <translation>Veriga zasilne zaustavitve sklenjena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start push button</source>
+        <translation>Tipka Start</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop push button</source>
+        <translation>Tipka Stop</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reset push button</source>
+        <translation>Tipka Ponastavi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Extend centering</source>
+        <translation>Izvleci centriranje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close clamps</source>
+        <translation>Zapri vpenjala</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spindle contactor</source>
+        <translation>Kontaktor vretena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Green lamp</source>
+        <translation>Zelena luč</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yellow lamp</source>
+        <translation>Rumena luč</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Red lamp</source>
+        <translation>Rdeča luč</translation>
+    </message>
+</context>
+<context>
     <name>MachineText</name>
     <message>
         <location filename="catalogue_strings.py" line="-119"/>
@@ -773,7 +1000,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+193"/>
+        <location filename="../../app/screens/main_screen.py" line="+199"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -869,7 +1096,12 @@ izmena</translation>
         <translation>Preostalo</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>All inputs and outputs</source>
+        <translation>Vsi vhodi in izhodi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>NOT HOMED</source>
         <translation>NI REFERENCIRANO</translation>
     </message>
@@ -937,7 +1169,7 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+161"/>
+        <location filename="../../app/screens/main_window.py" line="+169"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
