@@ -132,6 +132,13 @@ class NavBar(QFrame):
         layout.addWidget(self.shutdown_button, 1)
 
     def set_current(self, key: str) -> None:
+        """Mark the button of screen ``key``; none for a screen reached from another one
+        (the I/O page), so no button claims a screen it does not show."""
         button = self.buttons.get(key)
-        if button is not None and not button.isChecked():
+        if button is None:
+            self.group.setExclusive(False)
+            for other in self.buttons.values():
+                other.setChecked(False)
+            self.group.setExclusive(True)
+        elif not button.isChecked():
             button.setChecked(True)

@@ -29,6 +29,7 @@ from app.machine.commands import (
     LoadBoard,
     Reset,
     SelectRecipe,
+    SetClamps,
     Start,
 )
 from app.machine.link import MachineLink
@@ -237,6 +238,12 @@ def render_screenshots(
             recipes_screen.import_drawing(SAMPLE_DRAWING)  # type: ignore[attr-defined]
             shoot("recipes-drawn-profile")
             recipes_screen.discard()  # type: ignore[attr-defined]
+
+            # The technicians' I/O page, with the clamps closed by hand.
+            window.link.send(SetClamps(True))
+            driver.until(lambda s: s.inputs.clamps_closed, "clamps closed by hand")
+            window.show_screen("io")
+            shoot("io")
         finally:
             window.poller.stop()
             window.close()

@@ -79,6 +79,7 @@ def test_clamps_closed_by_hand_show_on_the_strip_and_the_io_page(qtbot, window, 
     assert main.io_strip.labels[Device.CLAMPS].text() == "Clamps\nopen"
     tap(find_button(window, "ioStrip"))
     assert window.current_key == "io"
+    assert not any(b.isChecked() for b in window.nav.buttons.values())
     page = window.page("io")
     assert len(page.rows) == len(fields(InputImage)) + len(fields(OutputImage))
     assert page.rows["clamps_closed"].address.text() == "simulated"
