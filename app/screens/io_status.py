@@ -13,9 +13,10 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+from PySide6.QtCore import QCoreApplication
 
 from app.drivers.contracts import InputImage
+from app.screens.texts import QT_TRANSLATE_NOOP
 from app.screens.widgets.lamp import LampColor
 
 IO_CONTEXT = "IoSignals"

@@ -469,7 +469,7 @@
 <context>
     <name>IoSignals</name>
     <message>
-        <location filename="../../app/screens/io_status.py" line="+25" />
+        <location filename="../../app/screens/io_status.py" line="+26" />
         <source>Spindle</source>
         <translation>Spindle</translation>
     </message>
