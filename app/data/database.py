@@ -684,15 +684,19 @@ class Database:
         """Casefolded name -> id of every recipe (one read; for imports)."""
         return self._name_index(self._conn)
 
-    def save_recipe(self, recipe: Recipe, user: User) -> Recipe:
+    def save_recipe(self, recipe: Recipe, user: User, *, logged_as: str | None = None) -> Recipe:
         """Insert (``id`` None) or update a recipe; returns it as stored, with its id.
 
+        ``logged_as``: the name the change log shows instead of the user's, for a change the
+        machine makes on that user's authority (:data:`~app.data.users.SIMULATION_ACTOR`).
         Raises RecipeValidationError listing every invalid field (nothing is stored),
         NotFoundError for an update of a recipe that no longer exists, PermissionDeniedError.
         """
-        return self.save_recipes([recipe], user)[0]
+        return self.save_recipes([recipe], user, logged_as=logged_as)[0]
 
-    def save_recipes(self, recipes: Sequence[Recipe], user: User) -> list[Recipe]:
+    def save_recipes(
+        self, recipes: Sequence[Recipe], user: User, *, logged_as: str | None = None
+    ) -> list[Recipe]:
         """Insert or update several recipes in one transaction: all of them or none."""
         for recipe in recipes:
             errors = recipe.validate(self.limits)
@@ -700,7 +704,7 @@ class Database:
                 raise RecipeValidationError(f"recipe {recipe.name!r}", errors)
         with self._write() as conn:
             actor = self.check_role(user, RECIPE_EDIT_ROLE, "changing recipes")
-            return self._store_recipes(conn, recipes, actor.name)
+            return self._store_recipes(conn, recipes, logged_as or actor.name)
 
     def save_plant_recipe(self, recipe: Recipe, plant_user: str) -> Recipe:
         """Store a recipe downloaded over the plant connection (OPC UA role ``plant``); the
@@ -896,8 +900,11 @@ class Database:
         """Change one parameter (validated, role-checked, logged); see :meth:`set_parameters`."""
         self.set_parameters({name: value}, user)
 
-    def set_parameters(self, values: Mapping[str, float], user: User) -> None:
-        """Change several parameters in one transaction, each change logged with user and time.
+    def set_parameters(
+        self, values: Mapping[str, float], user: User, *, logged_as: str | None = None
+    ) -> None:
+        """Change several parameters in one transaction, each change logged with user and time
+        (``logged_as``: the name logged instead of the user's, as in :meth:`save_recipe`).
 
         Every value is checked against the catalogue and the whole set against the rules
         between parameters before anything is stored: ParameterError lists all problems.
@@ -924,18 +931,19 @@ class Database:
             if cross:
                 raise ParameterError("parameters", cross)
             now = self._now()
+            logged_name = logged_as or actor.name
             for name, value in proposed.items():
                 if name not in values or value == current[name]:
                     continue
                 conn.execute(
                     "UPDATE parameters SET value = ?, updated_at = ?, updated_by = ? "
                     "WHERE name = ?",
-                    (value, now, actor.name, name),
+                    (value, now, logged_name, name),
                 )
                 conn.execute(
                     "INSERT INTO parameter_changes (time, name, old_value, new_value, user_name, "
                     "user_role) VALUES (?, ?, ?, ?, ?, ?)",
-                    (now, name, current[name], value, actor.name, actor.role.label),
+                    (now, name, current[name], value, logged_name, actor.role.label),
                 )
 
     def parameter_history(

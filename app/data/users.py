@@ -18,6 +18,10 @@ from dataclasses import dataclass
 from enum import IntEnum
 
 PIN_MIN_DIGITS = 4
+SIMULATION_ACTOR = "simulation"
+"""The name the change logs give what the simulated machine changes (its factory parameters,
+the recipes ``stave simulate`` is given): on the service user's authority, but never confused
+with a service engineer's own change."""
 PIN_MAX_DIGITS = 8
 
 # scrypt cost: about 60 ms per hash on the 2-core panel PC class of machine; authenticate()

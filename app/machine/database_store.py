@@ -45,7 +45,7 @@ from app.data.pending import (
 from app.data.recipe import Recipe
 from app.data.records import AlarmEvent, PieceResult, ProductionRecord
 from app.data.records import AlarmState as StoredAlarmState
-from app.data.users import Role, User
+from app.data.users import SIMULATION_ACTOR, Role, User
 from app.machine.alarms import AlarmTransition
 from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.process_params import config_parameters, stave_limits
@@ -119,9 +119,10 @@ def seed_values(db: Database, config: MachineConfig) -> dict[str, float] | None:
     return {k: v for k, v in config_parameters(config).items() if k in db.get_parameters()}
 
 
-def apply_write(db: Database, write: PendingWrite) -> None:
+def apply_write(db: Database, write: PendingWrite, logged_as: str | None = None) -> None:
     """Store one pending write (StorageError: try again later; RecordError/ParameterError: the
-    write itself is invalid and can never be stored)."""
+    write itself is invalid and can never be stored); ``logged_as`` names the machine in the
+    parameter log (the simulation) instead of the service user whose authority it uses."""
     if isinstance(write, PieceWrite):
         db.record_piece(write.record, skip_if_stored=True)
     elif isinstance(write, AlarmWrite):
@@ -133,7 +134,7 @@ def apply_write(db: Database, write: PendingWrite) -> None:
     elif isinstance(write, BarrelStaveWrite):
         db.record_barrel_stave(write.record)
     elif not db.parameter_history(limit=1):  # still untuned: nobody has changed anything since
-        db.set_parameters(write.values, _service_user(db))
+        db.set_parameters(write.values, _service_user(db), logged_as=logged_as)
 
 
 class DurableWriter:
@@ -145,6 +146,7 @@ class DurableWriter:
         self._pending: deque[tuple[PendingWrite, float]] = deque()
         self._lock = threading.Lock()
         self.retry_s = 0.0
+        self.logged_as: str | None = None  # the machine's name in the parameter log
         now = clock()
         for write in journal.entries():
             self._pending.append((write, now))
@@ -199,7 +201,7 @@ class DurableWriter:
                     break
                 write = self._pending[0][0]
             try:
-                apply_write(db, write)
+                apply_write(db, write, self.logged_as)
             except StorageError as exc:
                 self.retry_s = min(RETRY_MAX_S, max(RETRY_FIRST_S, self.retry_s * 2))
                 log.warning(
@@ -223,10 +225,15 @@ class DurableWriter:
 
 
 class DatabaseStore:
-    def __init__(self, db: Database) -> None:
+    """``logged_as``: the name the change logs give the machine's own changes (seeded
+    parameters, recipes a simulation run is given); None logs them as the service user."""
+
+    def __init__(self, db: Database, *, logged_as: str | None = None) -> None:
         self.db = db
         self._machine_user = _service_user(db)
+        self._logged_as = logged_as
         self.writer = DurableWriter(WriteJournal(journal_path(db.path)))
+        self.writer.logged_as = logged_as
         if self.writer.pending():
             self._kick()
 
@@ -250,7 +257,7 @@ class DatabaseStore:
         existing = self.db.get_recipe_by_name(recipe.name)
         if existing is not None:
             recipe = replace(recipe, id=existing.id)
-        return self.db.save_recipe(recipe, self._machine_user)
+        return self.db.save_recipe(recipe, self._machine_user, logged_as=self._logged_as)
 
     def parameters(self) -> dict[str, float]:
         return self.db.get_parameters()
@@ -332,11 +339,11 @@ class ThreadedStore(DatabaseStore):
 
     CLOSE_TIMEOUT_S = 10.0
 
-    def __init__(self, db: Database) -> None:
+    def __init__(self, db: Database, *, logged_as: str | None = None) -> None:
         self._wake: queue.Queue[bool] = queue.Queue()
         self._closing = threading.Event()
         self._close_deadline = 0.0
-        super().__init__(db)
+        super().__init__(db, logged_as=logged_as)
         self._thread = threading.Thread(
             target=self._run, args=(db.path,), name="db-writer", daemon=True
         )
@@ -381,7 +388,13 @@ class ThreadedStore(DatabaseStore):
 
 def open_store(db_path: Path, config: MachineConfig, *, threaded: bool) -> DatabaseStore:
     db = Database.open(db_path, limits=stave_limits(config))
-    store = ThreadedStore(db) if threaded else DatabaseStore(db)
+    # What the simulated machine changes is logged as the simulation, not as a person.
+    logged_as = SIMULATION_ACTOR if config.backend == "sim" else None
+    store = (
+        ThreadedStore(db, logged_as=logged_as)
+        if threaded
+        else DatabaseStore(db, logged_as=logged_as)
+    )
     values = seed_values(db, config)
     if values:
         store.seed_parameters(values)

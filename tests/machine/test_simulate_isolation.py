@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
 
@@ -14,6 +15,9 @@ import pytest
 from app.cli import main
 from app.data.database import Database
 from app.data.records import PieceResult, ProductionRecord
+from app.data.users import SIMULATION_ACTOR
+from app.machine.database_store import open_store
+from tests.drivers.sim.rig import make_config
 
 BARRIQUE = "Barrique 225 l Bordeaux"
 
@@ -113,3 +117,25 @@ def test_a_fault_without_effect_in_its_step_is_said(capsys: pytest.CaptureFixtur
         capsys, "--recipe", BARRIQUE, "--width", "150", "--inject", "drive_fault:Y@cutting_b"
     )
     assert "injected drive_fault@cutting_b: raised E010" in out
+
+
+@pytest.mark.parametrize(("backend", "logged"), [("sim", SIMULATION_ACTOR), ("modbus", "service")])
+def test_what_the_simulated_machine_changes_is_logged_as_the_simulation(
+    tmp_path: Path, backend: str, logged: str
+) -> None:
+    """Seeded factory parameters and a recipe the run is given: the simulation's, by name; on
+    a real backend the same changes are the service user's."""
+    config = make_config()
+    config = replace(
+        config, backend=backend, process=replace(config.process, lead_mm=config.process.lead_mm + 1)
+    )
+    store = open_store(tmp_path / f"{backend}.db", config, threaded=False)
+    try:  # the non-threaded store writes at once
+        recipe = store.recipe_by_name(BARRIQUE)
+        assert recipe is not None
+        store.save_recipe(replace(recipe, id=None, name="Given by the run"))
+        [change] = store.db.parameter_history("lead_mm")
+        assert change.user_name == logged
+        assert store.db.recipe_history()[0].user_name == logged
+    finally:
+        store.close()
