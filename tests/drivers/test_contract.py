@@ -32,7 +32,6 @@ from app.drivers.modbus.emulator import ModbusEmulator
 from app.drivers.sim.backend import create_backend as create_sim
 from app.drivers.sim.world import SimWorld
 from tests.drivers.canopen import conftest as can_rig
-from tests.drivers.canopen.world_nodes import WorldBus
 from tests.drivers.modbus.helpers import machine_table, tcp_modbus, with_port
 from tests.drivers.sim.rig import make_config
 
@@ -117,15 +116,7 @@ def canopen_bench() -> Iterator[Bench]:
     channel = f"stave-contract-{uuid.uuid4().hex[:12]}"
     config = parse_config(can_rig.machine_data(channel))
     world = SimWorld.from_config(config)
-    bus = WorldBus(
-        world,
-        channel,
-        can_rig.NODE_IDS,
-        can_rig.COUNTS,
-        can_rig.IO_NODE,
-        can_rig.INPUT_BITS,
-        can_rig.OUTPUT_BITS,
-    )
+    bus = can_rig.world_bus(world, channel)
     drives = world.drives
     try:
         backend = create_canopen(config)

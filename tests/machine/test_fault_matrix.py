@@ -25,7 +25,6 @@ from app.machine.database_store import open_store
 from app.machine.runtime import MachineRuntime
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState
 from tests.drivers.canopen import conftest as can_rig
-from tests.drivers.canopen.world_nodes import WorldBus
 from tests.drivers.modbus.helpers import tcp_modbus
 from tests.machine.conftest import Rig, make_rig
 
@@ -150,15 +149,7 @@ def canopen_rig(config: MachineConfig, tmp_path: Path) -> Iterator[Rig]:
         period_s=0.01,
     )
     world = SimWorld.from_config(machine)
-    bus = WorldBus(
-        world,
-        channel,
-        can_rig.NODE_IDS,
-        can_rig.COUNTS,
-        can_rig.IO_NODE,
-        can_rig.INPUT_BITS,
-        can_rig.OUTPUT_BITS,
-    )
+    bus = can_rig.world_bus(world, channel)
     runtime: MachineRuntime | None = None
     try:
         gauge = SimGauge(parse_gauge_settings({}), world, machine.period_s)

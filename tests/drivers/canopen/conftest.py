@@ -21,7 +21,9 @@ from app.config import MachineConfig, parse_config
 from app.drivers.canopen.backend import create_backend
 from app.drivers.canopen.settings import INPUT_FUNCTIONS, OUTPUT_FUNCTIONS
 from app.drivers.contracts import AxisFeedback, InputImage, MachineBackend, OutputImage
+from app.drivers.sim.world import SimWorld
 from tests.drivers.canopen.sim_drive import SimDrive, SimIoNode, SimNetwork
+from tests.drivers.canopen.world_nodes import WorldBus
 
 NODE_IDS = {"X": 1, "Y": 2, "Z": 3}
 IO_NODE = 10
@@ -67,6 +69,12 @@ def machine_data(channel: str, **overrides: Any) -> dict[str, Any]:
             "Z": {"encoder": "absolute"},
         },
     }
+
+
+def world_bus(world: SimWorld, channel: str) -> WorldBus:
+    """The world's drives and I/O as CANopen nodes on ``channel``, wired as
+    :func:`machine_data` configures the backend."""
+    return WorldBus(world, channel, NODE_IDS, COUNTS, IO_NODE, INPUT_BITS, OUTPUT_BITS)
 
 
 @dataclass
