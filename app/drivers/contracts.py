@@ -27,7 +27,7 @@ from __future__ import annotations
 import enum
 from abc import ABC, abstractmethod
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Protocol, runtime_checkable
 
 from app.drivers.cia402 import Cia402State, decode_statusword
@@ -110,6 +110,37 @@ class InputImage:
     start_button: bool = False
     stop_button: bool = False
     reset_button: bool = False
+    # The handwheel's axis selector (none on: off), its multiplier (neither on: x1) and the
+    # enable (dead-man) button of the handwheel and the joystick; unwired they read off.
+    handwheel_x: bool = False
+    handwheel_y: bool = False
+    handwheel_z: bool = False
+    handwheel_x10: bool = False
+    handwheel_x100: bool = False
+    jog_enable: bool = False
+    # Raw values of registers and analog inputs: the handwheel's 16-bit counter (0..65535)
+    # and the joystick's analog inputs (counts); None when not wired or not read.
+    handwheel_count: int | None = None
+    joystick_x: int | None = None
+    joystick_y: int | None = None
+    joystick_z: int | None = None
+
+
+DIGITAL_INPUTS: tuple[str, ...] = tuple(
+    f.name for f in fields(InputImage) if f.type in ("bool", bool)
+)
+"""The inputs a terminal bit carries (the I/O maps name them)."""
+PENDANT_INPUTS: tuple[str, ...] = (
+    "handwheel_x",
+    "handwheel_y",
+    "handwheel_z",
+    "handwheel_x10",
+    "handwheel_x100",
+    "jog_enable",
+)
+"""Digital inputs only a machine with a handwheel or a joystick wires (optional in a map)."""
+ANALOG_INPUTS: tuple[str, ...] = ("handwheel_count", "joystick_x", "joystick_y", "joystick_z")
+"""The inputs a register or an analog input carries."""
 
 
 @dataclass(frozen=True)

@@ -167,6 +167,42 @@ class RemoveBoard:
 
 
 @dataclass(frozen=True)
+class SelectHandwheel:
+    """Simulation only: the handwheel's axis selector ("" off, "X", "Y", "Z") and its
+    multiplier (1, 10 or 100)."""
+
+    axis: str
+    multiplier: int = 1
+
+
+@dataclass(frozen=True)
+class TurnHandwheel:
+    """Simulation only: turn the handwheel by ``counts`` (negative: the other way), spread
+    over time at ``rate_counts_s`` as a hand turns it."""
+
+    counts: int
+    rate_counts_s: float = 400.0
+
+
+@dataclass(frozen=True)
+class HoldJogEnable:
+    """Simulation only: hold (or let go of) the enable button of the handwheel and the
+    joystick."""
+
+    held: bool
+
+
+@dataclass(frozen=True)
+class PushJoystick:
+    """Simulation only: hold the joystick at these fractions of full deflection (-1..1);
+    all 0 lets it go."""
+
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+
+
+@dataclass(frozen=True)
 class SetUser:
     """The logged-in user changed (for the audit trail of alarms and records)."""
 
@@ -204,6 +240,10 @@ Command = (
     | ClearFaults
     | LoadBoard
     | RemoveBoard
+    | SelectHandwheel
+    | TurnHandwheel
+    | HoldJogEnable
+    | PushJoystick
     | SetUser
     | Shutdown
 )

@@ -38,6 +38,8 @@ from app.machine.executor import PathExecutor
 from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.homing_clearance import homing_clearance
 from app.machine.io_table import io_table
+from app.machine.pendant.jog_sources import PendantJog
+from app.machine.pendant.reading import PendantDevice
 from app.machine.permissions import may
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.preview import PlanPublisher
@@ -71,10 +73,12 @@ class MachineController(CycleControl):
         *,
         submit: PlanSubmitter = run_now,
         wall_clock: Callable[[], float] = time.time,
+        pendant: PendantDevice | None = None,
     ) -> None:
         super().__init__(config, backend, gauge, store, wall_clock, submit)
         self.plans = PlanPublisher()
         self.sim_tools = SimulationTools(backend)
+        self.pendant_jog = PendantJog(config, pendant)
         self.user = ""
         self.io_points = io_table(config)
         self._commands: collections.deque[cmd.Command] = collections.deque()
@@ -94,6 +98,10 @@ class MachineController(CycleControl):
     def power_up(self) -> None:
         super().power_up()
         self._publish_recipe_preview()
+
+    def shutdown(self) -> None:
+        super().shutdown()
+        self.pendant_jog.close()
 
     # ---------------------------------------------------------------- commands
     def post(self, command: cmd.Command) -> None:
@@ -135,9 +143,11 @@ class MachineController(CycleControl):
                 self.outputs = replace(self.outputs, spindle_on=False)
                 self._transition(Event.LEAVE_MANUAL)
             case cmd.JogContinuous(axis=axis, direction=direction):
-                self._refuse(self.manual.press(axis, direction, self.now_s, self.axes))
+                if not self._refuse_busy_jog():
+                    self._refuse(self.manual.press(axis, direction, self.now_s, self.axes))
             case cmd.JogStep(axis=axis, step=step):
-                self._refuse(self.manual.step(axis, step, self.axes))
+                if not self._refuse_busy_jog():
+                    self._refuse(self.manual.step(axis, step, self.axes))
             case cmd.JogRelease(axis=axis):
                 self.manual.release(axis)
             case cmd.SetJogSpeed(group=group, velocity=velocity, acceleration=acceleration):
@@ -162,12 +172,38 @@ class MachineController(CycleControl):
                 self.sim_tools.replace_board(width_mm)
             case cmd.RemoveBoard():
                 self.sim_tools.remove_board()
+            case cmd.SelectHandwheel() | cmd.TurnHandwheel() | cmd.HoldJogEnable():
+                self._refuse(self.sim_tools.handwheel(command))
+            case cmd.PushJoystick(x=x, y=y, z=z):
+                self._refuse(self.sim_tools.push_joystick(x, y, z))
             case cmd.SetUser(name=name):
                 self.user = name
             case cmd.Shutdown():
                 pass  # the runtime ends the loop; nothing to do in the period
             case _:
                 assert_never(command)
+
+    def _refuse_busy_jog(self) -> bool:
+        """The screen may jog only while no other control owns the jog."""
+        busy = self.pendant_jog.touch_screen()
+        self._refuse(busy)
+        return busy is not None
+
+    def _read_pendant(self) -> None:
+        """The handwheel, the joystick and a USB pendant, every period (the wheel's counter
+        is followed in every state, so entering manual mode moves nothing); they jog only in
+        manual mode, not while homing."""
+        jogging = self.state is MachineState.MANUAL and self.homing is None
+        outcome = self.pendant_jog.tick(
+            self.now_s, self.inputs, self.manual, self.axes, jogging_allowed=jogging
+        )
+        if outcome.jump_detail:
+            if jogging:
+                self._fault(AlarmCode.HANDWHEEL_JUMP, "handwheel", outcome.jump_detail)
+            else:  # ignored outside manual mode, and nothing moved: only noted
+                log.warning("handwheel: %s", outcome.jump_detail)
+        for notice in outcome.notices:
+            self._refuse(notice)
 
     def _home(self, axis: str) -> None:
         homing = HomingSequence.for_axes(axis, self.config.axes, self.now_s)
@@ -212,6 +248,7 @@ class MachineController(CycleControl):
         drives; the state unlatches once every cause is gone (see _check_reset)."""
         if not self.devices.all_up and (failure := self.devices.reconnect()):
             self._refuse(refusal(Reason.RECONNECT_FAILED, failure))
+        self.pendant_jog.forget()
         self.reset.request(self.now_s)
 
     def _select_recipe(self, recipe_id: int) -> None:
@@ -253,6 +290,7 @@ class MachineController(CycleControl):
             feedback, self.inputs, findings = self.devices.read()
         except DriverError as exc:
             self._apply(self.devices.lost(exc))
+            self.pendant_jog.forget()  # after the link is back the counter may be anywhere
             self._process_commands()
             return
         self.axes.update(feedback)
@@ -266,6 +304,7 @@ class MachineController(CycleControl):
         self._supervise()
         self._process_commands()
         self._check_reset()
+        self._read_pendant()
         try:
             self._run_activity()
         except CycleFault as exc:

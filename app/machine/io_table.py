@@ -13,10 +13,10 @@ from collections.abc import Mapping
 from dataclasses import fields
 
 from app.config import MachineConfig
-from app.drivers.contracts import InputImage, OutputImage
+from app.drivers.contracts import DIGITAL_INPUTS, OutputImage
 from app.machine.snapshot import IoPoint
 
-INPUT_SIGNALS: tuple[str, ...] = tuple(f.name for f in fields(InputImage))
+INPUT_SIGNALS: tuple[str, ...] = DIGITAL_INPUTS  # the counts and analog values are no terminal bit
 OUTPUT_SIGNALS: tuple[str, ...] = tuple(f.name for f in fields(OutputImage))
 CANOPEN_READ_INPUTS = 0x6000  # CiA 401 read input 8-bit
 CANOPEN_WRITE_OUTPUTS = 0x6200  # CiA 401 write output 8-bit

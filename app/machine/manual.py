@@ -17,10 +17,12 @@ from collections.abc import Mapping
 from app.config import AxisConfig
 from app.machine.axes import AxisGroup
 from app.machine.commands import JOG_DEADMAN_S
-from app.machine.planner.jog import Jogger
+from app.machine.planner.jog import Jogger, JogMode, ramp_distance
 from app.machine.refusals import Reason, Refusal, refusal
 
 GROUPS: dict[str, tuple[str, ...]] = {"XY": ("X", "Y"), "Z": ("Z",)}
+MIN_SPEED_FRACTION = 0.01  # a stick just outside its deadband still moves (1 % of jog speed)
+SPEED_CHANGE_FRACTION = 0.01  # the jog is replanned when the stick's speed changes this much
 
 
 class ManualControl:
@@ -107,6 +109,59 @@ class ManualControl:
             return reason
         result = self._joggers[axis].step(distance)
         return None if result.accepted else result.reason
+
+    def follow(self, axis: str, target: float, axes: AxisGroup) -> tuple[float, Refusal | None]:
+        """Move ``axis`` to ``target`` with the jog ramp (the handwheel); the same soft limits
+        and limit-switch rule as the screen's step jog. Returns the target taken (clipped at
+        a soft limit, or where the axis already goes when refused) and why, if not all."""
+        jogger = self._joggers.get(axis)
+        if jogger is None:
+            return target, refusal(Reason.AXIS_UNKNOWN, repr(axis))
+        base = jogger.step_base
+        if target == base:
+            return target, None
+        axes.request_enable()
+        if reason := self._toward_active_switch(axis, 1 if target > base else -1, axes):
+            return base, reason
+        result = jogger.move_to(target)
+        if not result.accepted or result.target is None:
+            return base, result.reason
+        return result.target, result.reason
+
+    def drive(self, axis: str, fraction: float, now_s: float, axes: AxisGroup) -> Refusal | None:
+        """Jog ``axis`` at ``fraction`` (-1..1) of its jog velocity (a joystick): a
+        continuous jog whose speed follows the stick; 0 releases it."""
+        jogger = self._joggers.get(axis)
+        if jogger is None:
+            return refusal(Reason.AXIS_UNKNOWN, repr(axis))
+        velocity, acceleration = self._speeds["Z" if axis == "Z" else "XY"]
+        if fraction == 0.0:
+            if jogger.mode is JogMode.CONTINUOUS:
+                jogger.release()
+                self._last_refresh_s.pop(axis, None)
+            jogger.set_limits(velocity, acceleration)
+            return None
+        speed = max(abs(fraction), MIN_SPEED_FRACTION) * velocity
+        if abs(speed - jogger.velocity_limit) > SPEED_CHANGE_FRACTION * velocity:
+            jogger.set_limits(speed, acceleration)
+        return self.press(axis, 1 if fraction > 0 else -1, now_s, axes)
+
+    def stopping_distance(self, axis: str) -> float:
+        """How far ``axis`` runs when braking from its jog velocity on the jog ramp."""
+        velocity, acceleration = self._speeds["Z" if axis == "Z" else "XY"]
+        return ramp_distance(velocity, acceleration, self._configs[axis].max_jerk)
+
+    def position(self, axis: str) -> float:
+        """Where the jog has the axis now (its setpoint)."""
+        return self._joggers[axis].position
+
+    def jog_target(self, axis: str) -> float:
+        """Where the axis's jog ends: a running step's target, else where it is."""
+        return self._joggers[axis].step_base
+
+    @property
+    def at_rest(self) -> bool:
+        return not any(jogger.moving for jogger in self._joggers.values())
 
     def release(self, axis: str = "") -> None:
         for name, jogger in self._joggers.items():

@@ -213,6 +213,10 @@ RULES: dict[type[cmd.Command], Rule] = {
     cmd.ClearFaults: may_simulate,
     cmd.LoadBoard: may_handle_board,
     cmd.RemoveBoard: may_handle_board,
+    cmd.SelectHandwheel: may_simulate,
+    cmd.TurnHandwheel: may_simulate,
+    cmd.HoldJogEnable: may_simulate,
+    cmd.PushJoystick: may_simulate,
     cmd.SetUser: always,
     cmd.Shutdown: always,
 }

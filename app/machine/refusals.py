@@ -102,6 +102,19 @@ class Reason(enum.Enum):
     HOMING_REFUSED = "homing refused: %1"
     HOMING_AROUND_BOARD = "a board is on the table: moving clear of it before homing"
     PLANT_NOTICE = "%1"  # a job notice from the plant connection, in the plant's words
+    SCREEN_HAS_JOG = "the screen is jogging: release it and let the axes stop first"
+    HANDWHEEL_HAS_JOG = "the handwheel is jogging: let it and the axes come to rest first"
+    JOYSTICK_HAS_JOG = "the joystick is jogging: let it go and the axes stop first"
+    PENDANT_HAS_JOG = "the USB pendant is jogging: let it and the axes come to rest first"
+    HANDWHEEL_IGNORED = "handwheel ignored: it jogs only on the Manual screen"
+    JOYSTICK_IGNORED = "joystick ignored: it jogs only on the Manual screen"
+    PENDANT_IGNORED = "USB pendant ignored: it jogs only on the Manual screen"
+    HOLD_ENABLE = "hold the enable button to jog with the handwheel or the joystick"
+    JOYSTICK_NOT_CENTRED = (
+        "joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated "
+        "once at rest"
+    )
+    HANDWHEEL_JUMPED = "the counter moved %1 counts in one read; a hand turns at most %2"
 
 
 def fill(template: str, args: tuple[str, ...]) -> str:

@@ -10,6 +10,7 @@ not there.
 from __future__ import annotations
 
 from app.drivers.contracts import FaultInjector, MachineBackend
+from app.machine import commands as cmd
 from app.machine.refusals import Reason, Refusal, refusal
 
 
@@ -47,6 +48,35 @@ class SimulationTools:
         if callable(remove):
             remove()
             self._pending_board = (width_mm,)
+
+    def handwheel(
+        self, command: cmd.SelectHandwheel | cmd.TurnHandwheel | cmd.HoldJogEnable
+    ) -> Refusal | None:
+        """Work the simulated handwheel: its selector, a turn, its enable button."""
+        wheel = getattr(self._backend.extras.get("world"), "handwheel", None)
+        if wheel is None:
+            return None
+        try:
+            match command:
+                case cmd.SelectHandwheel(axis=axis, multiplier=multiplier):
+                    wheel.select(axis, multiplier)
+                case cmd.TurnHandwheel(counts=counts, rate_counts_s=rate):
+                    wheel.turn(counts, rate)
+                case cmd.HoldJogEnable(held=held):
+                    wheel.enable = held
+        except (ValueError, TypeError) as exc:
+            return refusal(Reason.SIMULATION_REFUSED, exc)
+        return None
+
+    def push_joystick(self, x: float, y: float, z: float) -> Refusal | None:
+        stick = getattr(self._backend.extras.get("world"), "joystick", None)
+        if stick is None:
+            return None
+        try:
+            stick.push(x, y, z)
+        except (ValueError, TypeError) as exc:
+            return refusal(Reason.SIMULATION_REFUSED, exc)
+        return None
 
     def tick(self, part_present: bool) -> None:
         if self._pending_board is not None and not part_present:

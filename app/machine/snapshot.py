@@ -86,6 +86,28 @@ class PlanPreview:
     cutting_mask: tuple[bool, ...]
 
 
+class JogSource(enum.Enum):
+    """Who jogs in manual mode: one of them at a time."""
+
+    SCREEN = "screen"
+    HANDWHEEL = "handwheel"
+    JOYSTICK = "joystick"
+    PENDANT = "pendant"  # a USB pendant or gamepad
+
+
+@dataclass(frozen=True)
+class PendantView:
+    """The machine's own jog controls as the Manual screen shows them: who jogs now, the
+    handwheel's selected axis ("" off) and multiplier, and what is fitted."""
+
+    jog_source: JogSource | None = None
+    wheel_axis: str = ""
+    wheel_multiplier: int = 1
+    handwheel_fitted: bool = False
+    joystick_fitted: bool = False
+    pendant_connected: bool = False
+
+
 @dataclass(frozen=True)
 class MachineSnapshot:
     seq: int
@@ -114,6 +136,7 @@ class MachineSnapshot:
     allowed: dict[str, Refusal | None] = field(default_factory=dict)
     message: Refusal | None = None  # the last refusal or notice for the operator
     io_points: tuple[IoPoint, ...] = ()  # every input, then every output, in image order
+    pendant: PendantView = field(default_factory=PendantView)
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

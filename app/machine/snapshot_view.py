@@ -14,6 +14,7 @@ from app.machine.axes import AxisGroup
 from app.machine.cycle import AutomaticCycle
 from app.machine.homing import HomingSequence
 from app.machine.manual import ManualControl
+from app.machine.pendant.jog_sources import PendantJog
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.refusals import Refusal
 from app.machine.snapshot import AxisView, CycleView, IoPoint, MachineSnapshot
@@ -41,6 +42,7 @@ class MachineController(Protocol):
     feed_override_pct: float
     message: Refusal | None
     io_points: tuple[IoPoint, ...]
+    pendant_jog: PendantJog
 
     @property
     def pieces_shift(self) -> int: ...
@@ -131,6 +133,7 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         plan_id=c.plan_id,
         jog_xy=c.manual.speed("XY"),
         jog_z=c.manual.speed("Z"),
+        pendant=c.pendant_jog.view(),
         allowed=allowed_commands(c.facts()),
         message=c.message,
         io_points=c.io_points,

@@ -104,7 +104,7 @@ def condition_text(condition: Condition) -> str:
     return QCoreApplication.translate(IO_CONTEXT, condition.value)
 
 
-# Every field of InputImage and OutputImage -> its name on the I/O page.
+# Every digital input of InputImage and every OutputImage field -> its name on the I/O page.
 SIGNAL_NAMES: dict[str, str] = {
     "part_present": QT_TRANSLATE_NOOP("IoSignals", "Board present"),
     "centering_extended": QT_TRANSLATE_NOOP("IoSignals", "Centering extended"),
@@ -117,6 +117,12 @@ SIGNAL_NAMES: dict[str, str] = {
     "start_button": QT_TRANSLATE_NOOP("IoSignals", "Start push button"),
     "stop_button": QT_TRANSLATE_NOOP("IoSignals", "Stop push button"),
     "reset_button": QT_TRANSLATE_NOOP("IoSignals", "Reset push button"),
+    "handwheel_x": QT_TRANSLATE_NOOP("IoSignals", "Handwheel selector X"),
+    "handwheel_y": QT_TRANSLATE_NOOP("IoSignals", "Handwheel selector Y"),
+    "handwheel_z": QT_TRANSLATE_NOOP("IoSignals", "Handwheel selector Z (tilt)"),
+    "handwheel_x10": QT_TRANSLATE_NOOP("IoSignals", "Handwheel multiplier x10"),
+    "handwheel_x100": QT_TRANSLATE_NOOP("IoSignals", "Handwheel multiplier x100"),
+    "jog_enable": QT_TRANSLATE_NOOP("IoSignals", "Jog enable button"),
     "centering_extend": QT_TRANSLATE_NOOP("IoSignals", "Extend centering"),
     "clamps_close": QT_TRANSLATE_NOOP("IoSignals", "Close clamps"),
     "spindle_on": QT_TRANSLATE_NOOP("IoSignals", "Spindle contactor"),

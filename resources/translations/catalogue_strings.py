@@ -9,6 +9,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "%1+ limit switch is active: jog %1 in the - direction only"),
     QT_TRANSLATE_NOOP("MachineText", "%1- limit switch is active: jog %1 in the + direction only"),
     QT_TRANSLATE_NOOP("MachineText", "%1: Resume or Abandon"),
+    QT_TRANSLATE_NOOP("MachineText", "USB pendant ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP(
         "MachineText",
         "a board is on the table and the axes do not know where they are: take the board off before homing",
@@ -42,6 +43,10 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "communication not restored"),
     QT_TRANSLATE_NOOP("MachineText", "emergency stop still pressed"),
     QT_TRANSLATE_NOOP("MachineText", "feed override %1 % is not allowed: 0 to 120 %"),
+    QT_TRANSLATE_NOOP("MachineText", "handwheel ignored: it jogs only on the Manual screen"),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "hold the enable button to jog with the handwheel or the joystick"
+    ),
     QT_TRANSLATE_NOOP("MachineText", "homing refused: %1"),
     QT_TRANSLATE_NOOP(
         "MachineText", "jog acceleration %1 %2/s² is not allowed: above 0 and at most %3"
@@ -49,6 +54,11 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "jog direction %1 is not allowed: -1 or 1"),
     QT_TRANSLATE_NOOP("MachineText", "jog group %1 is not allowed: XY or Z"),
     QT_TRANSLATE_NOOP("MachineText", "jog speed %1 %2/s is not allowed: above 0 and at most %3"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
+        "joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated once at rest",
+    ),
+    QT_TRANSLATE_NOOP("MachineText", "joystick ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP("MachineText", "leave manual mode first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is busy (automatic): stop it first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is busy (homing): stop it first"),
@@ -85,10 +95,23 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "reset failed"),
     QT_TRANSLATE_NOOP("MachineText", "resuming the board"),
     QT_TRANSLATE_NOOP("MachineText", "select a recipe first"),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "the USB pendant is jogging: let it and the axes come to rest first"
+    ),
     QT_TRANSLATE_NOOP("MachineText", "the board is clamped: unclamp it first"),
     QT_TRANSLATE_NOOP("MachineText", "the board was unclamped: it may have moved, abandon it"),
     QT_TRANSLATE_NOOP(
+        "MachineText", "the counter moved %1 counts in one read; a hand turns at most %2"
+    ),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "the handwheel is jogging: let it and the axes come to rest first"
+    ),
+    QT_TRANSLATE_NOOP("MachineText", "the joystick is jogging: let it go and the axes stop first"),
+    QT_TRANSLATE_NOOP(
         "MachineText", "the recipe selected before the restart cannot be read: select a recipe"
+    ),
+    QT_TRANSLATE_NOOP(
+        "MachineText", "the screen is jogging: release it and let the axes stop first"
     ),
     QT_TRANSLATE_NOOP("MachineText", "the simulation refused: %1"),
     QT_TRANSLATE_NOOP("MachineText", "unknown command"),

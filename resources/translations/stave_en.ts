@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+96" />
+        <location filename="catalogue_strings.py" line="+119" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -615,6 +615,36 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Handwheel selector X</source>
+        <translation>Handwheel selector X</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handwheel selector Y</source>
+        <translation>Handwheel selector Y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handwheel selector Z (tilt)</source>
+        <translation>Handwheel selector Z (tilt)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handwheel multiplier x10</source>
+        <translation>Handwheel multiplier x10</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handwheel multiplier x100</source>
+        <translation>Handwheel multiplier x100</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jog enable button</source>
+        <translation>Jog enable button</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Extend centering</source>
         <translation>Extend centering</translation>
     </message>
@@ -647,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-119" />
+        <location filename="catalogue_strings.py" line="-142" />
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -675,6 +705,11 @@
         <location line="+1" />
         <source>%1: Resume or Abandon</source>
         <translation>%1: Resume or Abandon</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>USB pendant ignored: it jogs only on the Manual screen</source>
+        <translation>USB pendant ignored: it jogs only on the Manual screen</translation>
     </message>
     <message>
         <location line="+1" />
@@ -788,6 +823,16 @@
     </message>
     <message>
         <location line="+1" />
+        <source>handwheel ignored: it jogs only on the Manual screen</source>
+        <translation>handwheel ignored: it jogs only on the Manual screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>hold the enable button to jog with the handwheel or the joystick</source>
+        <translation>hold the enable button to jog with the handwheel or the joystick</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>homing refused: %1</source>
         <translation>homing refused: %1</translation>
     </message>
@@ -810,6 +855,16 @@
         <location line="+1" />
         <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
         <translation>jog speed %1 %2/s is not allowed: above 0 and at most %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated once at rest</source>
+        <translation>joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated once at rest</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joystick ignored: it jogs only on the Manual screen</source>
+        <translation>joystick ignored: it jogs only on the Manual screen</translation>
     </message>
     <message>
         <location line="+1" />
@@ -968,6 +1023,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>the USB pendant is jogging: let it and the axes come to rest first</source>
+        <translation>the USB pendant is jogging: let it and the axes come to rest first</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>the board is clamped: unclamp it first</source>
         <translation>the board is clamped: unclamp it first</translation>
     </message>
@@ -978,8 +1038,28 @@
     </message>
     <message>
         <location line="+1" />
+        <source>the counter moved %1 counts in one read; a hand turns at most %2</source>
+        <translation>the counter moved %1 counts in one read; a hand turns at most %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the handwheel is jogging: let it and the axes come to rest first</source>
+        <translation>the handwheel is jogging: let it and the axes come to rest first</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the joystick is jogging: let it go and the axes stop first</source>
+        <translation>the joystick is jogging: let it go and the axes stop first</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the recipe selected before the restart cannot be read: select a recipe</source>
         <translation>the recipe selected before the restart cannot be read: select a recipe</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the screen is jogging: release it and let the axes stop first</source>
+        <translation>the screen is jogging: release it and let the axes stop first</translation>
     </message>
     <message>
         <location line="+3" />

@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+96"/>
+        <location filename="catalogue_strings.py" line="+119"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -615,6 +615,36 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Handwheel selector X</source>
+        <translation>Izbirnik ročnega kolesa X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Handwheel selector Y</source>
+        <translation>Izbirnik ročnega kolesa Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Handwheel selector Z (tilt)</source>
+        <translation>Izbirnik ročnega kolesa Z (nagib)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Handwheel multiplier x10</source>
+        <translation>Množilnik ročnega kolesa x10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Handwheel multiplier x100</source>
+        <translation>Množilnik ročnega kolesa x100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog enable button</source>
+        <translation>Tipka za omogočanje premikanja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Extend centering</source>
         <translation>Izvleci centriranje</translation>
     </message>
@@ -647,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-119"/>
+        <location filename="catalogue_strings.py" line="-142"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -675,6 +705,11 @@
         <location line="+1"/>
         <source>%1: Resume or Abandon</source>
         <translation>%1: nadaljujte ali opustite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>USB pendant ignored: it jogs only on the Manual screen</source>
+        <translation>USB-upravljalnik ni upoštevan: premika samo na zaslonu Ročno</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -788,6 +823,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>handwheel ignored: it jogs only on the Manual screen</source>
+        <translation>ročno kolo ni upoštevano: premika samo na zaslonu Ročno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hold the enable button to jog with the handwheel or the joystick</source>
+        <translation>za premikanje z ročnim kolesom ali igralno palico držite tipko za omogočanje</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>homing refused: %1</source>
         <translation>referenciranje zavrnjeno: %1</translation>
     </message>
@@ -810,6 +855,16 @@
         <location line="+1"/>
         <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
         <translation>hitrost ročnega premika %1 %2/s ni dovoljena: nad 0 in največ %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated once at rest</source>
+        <translation>igralna palica %1 je ob zagonu %2 enot od središča: spustite jo, umeri se, ko miruje</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>joystick ignored: it jogs only on the Manual screen</source>
+        <translation>igralna palica ni upoštevana: premika samo na zaslonu Ročno</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -968,6 +1023,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>the USB pendant is jogging: let it and the axes come to rest first</source>
+        <translation>USB-upravljalnik premika: najprej naj se umiri on in osi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>the board is clamped: unclamp it first</source>
         <translation>deska je vpeta: najprej jo sprostite</translation>
     </message>
@@ -978,8 +1038,28 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>the counter moved %1 counts in one read; a hand turns at most %2</source>
+        <translation>števec se je v enem branju premaknil za %1 enot; roka zavrti največ %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the handwheel is jogging: let it and the axes come to rest first</source>
+        <translation>ročno kolo premika: najprej naj se umiri ono in osi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the joystick is jogging: let it go and the axes stop first</source>
+        <translation>igralna palica premika: najprej jo spustite in počakajte, da se osi ustavijo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the recipe selected before the restart cannot be read: select a recipe</source>
         <translation>recepta, izbranega pred ponovnim zagonom, ni mogoče prebrati: izberite recept</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the screen is jogging: release it and let the axes stop first</source>
+        <translation>zaslon premika: najprej spustite tipko in počakajte, da se osi ustavijo</translation>
     </message>
     <message>
         <location line="+3"/>

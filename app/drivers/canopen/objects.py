@@ -64,7 +64,7 @@ DI_HOME_SWITCH = 1 << 2
 # ---- CiA 401 generic I/O profile ------------------------------------------------------------
 READ_INPUT_8BIT = 0x6000  # digital inputs, 8 per sub-index
 WRITE_OUTPUT_8BIT = 0x6200  # digital outputs, 8 per sub-index
-IO_BYTES = 2  # the builder's I/O node has 16 inputs and 16 outputs
+IO_BYTES = 4  # the builder's I/O node has 32 inputs and 32 outputs
 
 PDO_SLOTS = 4  # PDO 1..4 of the pre-defined connection set
 
@@ -231,7 +231,7 @@ def build_drive_od(node_id: int) -> ObjectDictionary:
 
 
 def build_io_od(node_id: int) -> ObjectDictionary:
-    """The CiA 401 objects of a digital I/O node with 16 inputs and 16 outputs."""
+    """The CiA 401 objects of a digital I/O node with 32 inputs and 32 outputs."""
     od = ObjectDictionary()  # type: ignore[no-untyped-call]
     od.node_id = node_id
     _communication_objects(od, node_id, 0x00030000 | PROFILE_IO)  # digital in + out, 401

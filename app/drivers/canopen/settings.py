@@ -21,7 +21,7 @@ from app.config import AxisConfig, ConfigError, MachineConfig, Section
 from app.drivers.canopen.busload import MAX_BUS_LOAD, BusLoad, bus_load
 from app.drivers.canopen.master_heartbeat import CONSUMER_TIMEOUT_MAX_MS
 from app.drivers.canopen.pdo import cyclic_frames
-from app.drivers.contracts import InputImage, OutputImage
+from app.drivers.contracts import DIGITAL_INPUTS, PENDANT_INPUTS, OutputImage
 
 ROOT = "backend.canopen"
 BITRATES: tuple[int, ...] = (10_000, 20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)
@@ -56,9 +56,12 @@ INTERFACES: tuple[str, ...] = (
 HOMING_METHODS: frozenset[int] = frozenset(
     [*range(1, 15), *range(17, 31), 33, 34, 35, 37, *range(-128, 0)]
 )
-INPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(InputImage))
+INPUT_FUNCTIONS: tuple[str, ...] = tuple(n for n in DIGITAL_INPUTS if n not in PENDANT_INPUTS)
+"""The inputs every machine wires (required in the map)."""
+OPTIONAL_INPUT_FUNCTIONS: tuple[str, ...] = PENDANT_INPUTS
+"""The handwheel's and the joystick's switches: -1 (the default) when not wired."""
 OUTPUT_FUNCTIONS: tuple[str, ...] = tuple(f.name for f in dataclasses.fields(OutputImage))
-IO_BITS = 16  # a CiA 401 node with up to two bytes of inputs and two of outputs
+IO_BITS = 32  # a CiA 401 node with up to four bytes of inputs and four of outputs
 DEFAULT_MASTER_NODE_ID = 127  # the usual node id of a CANopen manager (NMT master)
 
 
@@ -215,12 +218,21 @@ def _read_axis(table: _Table, axis: AxisConfig) -> AxisNodeSettings:
     return AxisNodeSettings(axis.name, node_id, counts, invert, method)
 
 
-def _read_bits(table: _Table, functions: tuple[str, ...], kind: str) -> dict[str, int]:
+def _read_bits(
+    table: _Table, functions: tuple[str, ...], kind: str, optional: tuple[str, ...] = ()
+) -> dict[str, int]:
     bits: dict[str, int] = {}
-    for name in functions:
+    for name in (*functions, *optional):
+        wired = name in functions
         bit = table.integer(
-            name, _MISSING, 0, IO_BITS - 1, f" (the {kind} bit of this function on the I/O node)"
+            name,
+            _MISSING if wired else -1,
+            0 if wired else -1,
+            IO_BITS - 1,
+            f" (the {kind} bit of this function on the I/O node{'' if wired else ', -1: none'})",
         )
+        if bit < 0:
+            continue
         clash = [other for other, used in bits.items() if used == bit]
         if clash:
             raise table.error(name, bit, f"a bit no other {kind} uses ({clash[0]} has {bit})")
@@ -231,10 +243,12 @@ def _read_bits(table: _Table, functions: tuple[str, ...], kind: str) -> dict[str
 
 def _read_io(table: _Table) -> IoNodeSettings:
     node_id = table.integer("node_id", _MISSING, 1, 127, " (the I/O node's CANopen node id)")
-    inputs = _read_bits(table.table("inputs", required=True), INPUT_FUNCTIONS, "input")
+    inputs = _read_bits(
+        table.table("inputs", required=True), INPUT_FUNCTIONS, "input", OPTIONAL_INPUT_FUNCTIONS
+    )
     outputs = _read_bits(table.table("outputs", required=True), OUTPUT_FUNCTIONS, "output")
     inverted = table.value("inverted_inputs", [], "a list of input functions")
-    if not isinstance(inverted, list) or any(n not in INPUT_FUNCTIONS for n in inverted):
+    if not isinstance(inverted, list) or any(n not in inputs for n in inverted):
         raise table.error(
             "inverted_inputs", inverted, "a list of input functions: " + ", ".join(INPUT_FUNCTIONS)
         )

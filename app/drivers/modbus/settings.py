@@ -26,7 +26,7 @@ from typing import Any
 
 from app.config import ConfigError, MachineConfig, Section
 from app.drivers.cia402 import OperationMode
-from app.drivers.contracts import InputImage, OutputImage
+from app.drivers.contracts import DIGITAL_INPUTS, OutputImage
 
 MAX_READ_REGISTERS = 125  # Modbus limit of one read holding/input registers request
 MAX_WRITE_REGISTERS = 123  # Modbus limit of one write multiple registers request
@@ -265,7 +265,7 @@ DEFAULT_OUTPUT_BITS: dict[str, int] = {
     "lamp_red": 5,
 }
 
-INPUT_NAMES: tuple[str, ...] = tuple(f.name for f in fields(InputImage))
+INPUT_NAMES: tuple[str, ...] = DIGITAL_INPUTS
 OUTPUT_NAMES: tuple[str, ...] = tuple(f.name for f in fields(OutputImage))
 # The safety chain's state must come from a wire: unwired it would read "healthy" forever.
 MUST_BE_WIRED: tuple[str, ...] = ("estop_ok", "guard_closed")
@@ -529,7 +529,7 @@ def _bit_table(s: Section, names: tuple[str, ...], defaults: Mapping[str, int]) 
     bits: dict[str, int] = {}
     used: dict[int, str] = {}
     for name in names:
-        bit = s.integer(name, defaults[name], -1, MAX_BITS - 1)
+        bit = s.integer(name, defaults.get(name, -1), -1, MAX_BITS - 1)
         if bit < 0:
             continue
         if bit in used:

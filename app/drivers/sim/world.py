@@ -25,12 +25,13 @@ import math
 import random
 from collections import deque
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from app.config import MachineConfig
 from app.drivers.contracts import AXIS_NAMES, InputImage, OutputImage
 from app.drivers.sim.drive import DriveParams, SimDrive
 from app.drivers.sim.io import MachineIO
+from app.drivers.sim.pendant import SimHandwheel, SimJoystick
 from app.drivers.sim.settings import SimSettings, parse_sim_settings
 
 MAX_SUBSTEP_S = 0.001
@@ -128,6 +129,9 @@ class SimWorld:
         self._load_at_s: float | None = None
         if self.settings.board_present or self.settings.auto_load:
             self.load_board()
+        stick = config.pendant.joystick
+        self.handwheel = SimHandwheel()
+        self.joystick = SimJoystick(stick.mid_scale_counts, stick.full_scale_counts)
 
     @classmethod
     def from_config(cls, config: MachineConfig) -> SimWorld:
@@ -164,6 +168,8 @@ class SimWorld:
             for drive in drives:
                 drive.step(dt)
             self._count += 1
+        if steps:
+            self.handwheel.step(steps * dt)
 
     def add_sync_hook(self, hook: Callable[[], None]) -> None:
         """``hook`` runs at every SYNC while the drives' link is up (the master's PDOs)."""
@@ -206,8 +212,27 @@ class SimWorld:
 
     # -- I/O -------------------------------------------------------------------------------
     def inputs(self) -> InputImage:
-        """What the input terminals read now."""
-        return self.io.inputs(self.time_s, self.board is not None)
+        """What the input terminals read now (the handwheel and the joystick as the
+        configuration says they are fitted)."""
+        image = self.io.inputs(self.time_s, self.board is not None)
+        pendant = self.config.pendant
+        if not (pendant.handwheel.fitted or pendant.joystick.fitted):
+            return image
+        wheel = self.handwheel.inputs()
+        stick = self.joystick
+        return replace(
+            image,
+            handwheel_x=wheel.axis == "X",
+            handwheel_y=wheel.axis == "Y",
+            handwheel_z=wheel.axis == "Z",
+            handwheel_x10=wheel.multiplier == 10,
+            handwheel_x100=wheel.multiplier == 100,
+            jog_enable=wheel.enable,
+            handwheel_count=wheel.count if pendant.handwheel.fitted else None,
+            joystick_x=stick.counts("X") if pendant.joystick.fitted else None,
+            joystick_y=stick.counts("Y") if pendant.joystick.fitted else None,
+            joystick_z=stick.counts("Z") if pendant.joystick.z_fitted else None,
+        )
 
     def write_outputs(self, outputs: OutputImage) -> None:
         self.io.apply_outputs(outputs)

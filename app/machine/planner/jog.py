@@ -38,6 +38,14 @@ _LIMIT_TOLERANCE = 1e-9
 """Positions this close to a soft limit count as at the limit (axis units)."""
 
 
+def ramp_distance(velocity: float, acceleration: float, jerk: float) -> float:
+    """How far a jerk-limited ramp runs from ``velocity`` to rest (or from rest up to it):
+    the velocity times half the ramp's time, the acceleration phases included."""
+    if velocity * jerk >= acceleration * acceleration:
+        return velocity / 2.0 * (velocity / acceleration + acceleration / jerk)
+    return velocity * math.sqrt(velocity / jerk)  # the ramp never reaches the acceleration
+
+
 class JogMode(enum.Enum):
     IDLE = "idle"
     CONTINUOUS = "continuous"
@@ -148,6 +156,11 @@ class Jogger:
         return self._mode is not JogMode.IDLE
 
     @property
+    def velocity_limit(self) -> float:
+        """The jog velocity now in force."""
+        return self._velocity
+
+    @property
     def limits(self) -> tuple[float, float]:
         return (self._min, self._max)
 
@@ -214,16 +227,32 @@ class Jogger:
             return JogResult(False, None, Refusal(Reason.STEP_OF_ZERO))
         if self._mode in (JogMode.CONTINUOUS, JogMode.STOPPING):
             return JogResult(False, None, refusal(Reason.RELEASE_JOG_FIRST, self.axis))
-        direction = 1 if distance > 0.0 else -1
+        base = self.step_base
+        return self._step_to(base, base + distance, 1 if distance > 0.0 else -1)
+
+    @property
+    def step_base(self) -> float:
+        """Where a step starts from: the running step's target, else the position."""
+        if self._mode is JogMode.STEP and self._target is not None:
+            return self._target
+        return self.position
+
+    def move_to(self, target: float) -> JogResult:
+        """A step jog to ``target`` itself (the handwheel: its position is a whole number of
+        increments from where it started, never a sum of rounded steps). Clipped at the soft
+        limits like a step, with the reason."""
+        target = _finite("target", target)
+        if self._mode in (JogMode.CONTINUOUS, JogMode.STOPPING):
+            return JogResult(False, None, refusal(Reason.RELEASE_JOG_FIRST, self.axis))
+        base = self.step_base
+        if target == base:
+            return JogResult(True, target)
+        return self._step_to(base, target, 1 if target > base else -1)
+
+    def _step_to(self, base: float, target: float, direction: int) -> JogResult:
         refused = self._refuse_outward(direction)
         if refused:
             return JogResult(False, None, refused)
-        base = (
-            self._target
-            if self._mode is JogMode.STEP and self._target is not None
-            else self.position
-        )
-        target = base + distance
         reason = None
         if target > self._max and direction > 0:
             target = max(self._max, base)

@@ -225,9 +225,9 @@ def settings_error(channel, mutate) -> ConfigError:
             "part_present has 0",
         ),
         (
-            lambda s: s["io"]["outputs"].update(spindle_on=16),
+            lambda s: s["io"]["outputs"].update(spindle_on=32),
             "backend.canopen.io.outputs.spindle_on",
-            "from 0 to 15",
+            "from 0 to 31",
         ),
         (
             lambda s: s["io"].update(inverted_inputs=["estop"]),
