@@ -45,6 +45,7 @@ ALLOWED: dict[str, tuple[str, ...]] = {
     "machine": (
         VERSION,
         "app.config",
+        "app.pendant_settings",
         "app.data",
         "app.drivers",
         "app.geometry",
