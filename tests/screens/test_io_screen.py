@@ -8,7 +8,7 @@ from dataclasses import fields
 
 import pytest
 
-from app.drivers.contracts import InputImage, OutputImage
+from app.drivers.contracts import DIGITAL_INPUTS, InputImage, OutputImage
 from app.machine.states import MachineState
 from app.screens.io_status import (
     SIGNAL_NAMES,
@@ -70,7 +70,7 @@ def test_strip_shows_each_device_once_in_order() -> None:
 
 
 def test_every_input_and_output_has_a_name() -> None:
-    signals = {f.name for f in fields(InputImage)} | {f.name for f in fields(OutputImage)}
+    signals = set(DIGITAL_INPUTS) | {f.name for f in fields(OutputImage)}
     assert set(SIGNAL_NAMES) == signals
 
 
@@ -81,7 +81,7 @@ def test_clamps_closed_by_hand_show_on_the_strip_and_the_io_page(qtbot, window, 
     assert window.current_key == "io"
     assert not any(b.isChecked() for b in window.nav.buttons.values())
     page = window.page("io")
-    assert len(page.rows) == len(fields(InputImage)) + len(fields(OutputImage))
+    assert len(page.rows) == len(DIGITAL_INPUTS) + len(fields(OutputImage))
     assert page.rows["clamps_closed"].address.text() == "simulated"
     assert page.rows["clamps_closed"].state.text() == "off"
 
