@@ -70,6 +70,12 @@ class RestoreReport:
     previous_copy: Path | None
 
 
+def _one_line(reason: object) -> str:
+    """A reason as one line: SQLite quotes the damaged schema text it failed on, newlines
+    and all, and a message on the panel or the terminal must stay one line."""
+    return " ".join(str(reason).split())
+
+
 def _connect_existing(path: Path, read_only: bool) -> sqlite3.Connection:
     """Connect without ever creating a file (a plain connect creates an empty database)."""
     mode = "ro" if read_only else "rw"
@@ -125,13 +131,13 @@ def backup_database(source: Database | Path, destination: Path, *, overwrite: bo
             problems = [str(row[0]) for row in dst.execute("PRAGMA integrity_check")]
             if problems != ["ok"]:
                 raise BackupError(
-                    f"{source_path}: the copy fails the integrity check: {problems[0]}"
+                    f"{source_path}: the copy fails the integrity check: {_one_line(problems[0])}"
                 )
         digest = file_sha256(partial)
         partial.replace(target)
     except sqlite3.Error as exc:
         partial.unlink(missing_ok=True)
-        raise BackupError(f"{source_path}: backup to {target} failed ({exc})") from None
+        raise BackupError(f"{source_path}: backup to {target} failed ({_one_line(exc)})") from None
     except BaseException:
         partial.unlink(missing_ok=True)
         raise
@@ -181,7 +187,7 @@ def inspect_backup(path: Path) -> BackupInfo:
         with closing(_connect_existing(path, read_only=True)) as conn:
             problems = [str(row[0]) for row in conn.execute("PRAGMA integrity_check")]
             if problems != ["ok"]:
-                raise BackupError(f"{path}: fails the integrity check: {problems[0]}")
+                raise BackupError(f"{path}: fails the integrity check: {_one_line(problems[0])}")
             version = read_schema_version(conn)
             if not 1 <= version <= SCHEMA_VERSION:
                 raise BackupError(
@@ -193,8 +199,8 @@ def inspect_backup(path: Path) -> BackupInfo:
                 raise BackupError(f"{path}: fails the foreign key check")
             recipes = int(conn.execute("SELECT count(*) FROM recipes").fetchone()[0])
             records = int(conn.execute("SELECT count(*) FROM production").fetchone()[0])
-    except sqlite3.Error as exc:
-        raise BackupError(f"{path}: cannot be read as a database ({exc})") from None
+    except (sqlite3.Error, UnicodeDecodeError) as exc:  # damaged text is not UTF-8
+        raise BackupError(f"{path}: cannot be read as a database ({_one_line(exc)})") from None
     return BackupInfo(path, version, recipes, records)
 
 
@@ -234,20 +240,20 @@ def _check_content(path: Path, candidate: Database) -> None:
     try:
         problems = candidate.integrity_problems()
         if problems:
-            raise BackupError(f"{path}: {problems[0]}")
+            raise BackupError(f"{path}: {_one_line(problems[0])}")
         users = candidate.list_users()
         if not any(user.role is Role.SERVICE for user in users):
             raise BackupError(f"{path}: has no service user (at least one is required)")
         for recipe in candidate.list_recipes():
             errors = recipe.validate(candidate.limits)
             if errors:
-                raise BackupError(f"{path}: recipe {recipe.name!r}: {errors[0].message}")
+                raise BackupError(f"{path}: recipe {recipe.name!r}: {_one_line(errors[0].message)}")
         candidate.check_stored_parameters()
         candidate.check_stored_records()
     except BackupError:
         raise
     except (DataError, ValueError, TypeError, ZeroDivisionError, OverflowError) as exc:
-        raise BackupError(f"{path}: a stored value breaks the rules: {exc}") from None
+        raise BackupError(f"{path}: a stored value breaks the rules: {_one_line(exc)}") from None
 
 
 def restore_database(
@@ -278,7 +284,9 @@ def restore_database(
     try:
         prepared, fd = create_temporary_sibling(database_path)
     except OSError as exc:
-        raise BackupError(f"{database_path.parent}: cannot prepare the restore ({exc})") from None
+        raise BackupError(
+            f"{database_path.parent}: cannot prepare the restore ({_one_line(exc)})"
+        ) from None
     os.close(fd)
     previous: Path | None = None
     try:
@@ -286,13 +294,13 @@ def restore_database(
             _copy_database(backup_path, prepared)
             with closing(sqlite3.connect(prepared)) as conn:
                 _check_exact_schema(backup_path, conn, info.schema_version)
-        except sqlite3.Error as exc:
-            raise BackupError(f"{backup_path}: cannot be copied ({exc})") from None
+        except (sqlite3.Error, UnicodeDecodeError) as exc:
+            raise BackupError(f"{backup_path}: cannot be copied ({_one_line(exc)})") from None
         try:
             candidate = Database.open(prepared, load_samples=False, limits=limits)
-        except DataError as exc:
+        except (DataError, UnicodeDecodeError) as exc:
             raise BackupError(
-                f"{backup_path}: cannot be brought to the current schema ({exc})"
+                f"{backup_path}: cannot be brought to the current schema ({_one_line(exc)})"
             ) from None
         with candidate:
             _check_content(backup_path, candidate)
@@ -311,7 +319,8 @@ def restore_database(
             src.backup(dst)
     except sqlite3.Error as exc:
         raise BackupError(
-            f"{database_path}: restore from {backup_path} failed, database unchanged ({exc})"
+            f"{database_path}: restore from {backup_path} failed, database unchanged "
+            f"({_one_line(exc)})"
         ) from None
     finally:
         for leftover in (prepared, Path(f"{prepared}-wal"), Path(f"{prepared}-shm")):
