@@ -19,7 +19,7 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from app.machine.snapshot import AlarmState, AlarmView
+from app.machine.snapshot import AlarmArgument, AlarmState, AlarmView
 
 
 class AlarmCode(enum.StrEnum):
@@ -195,6 +195,7 @@ class Alarm:
     detail: str
     state: AlarmState
     raised_at: float
+    arguments: tuple[AlarmArgument, ...] = ()
 
     @property
     def text(self) -> str:
@@ -209,6 +210,7 @@ class Alarm:
             self.state,
             self.raised_at,
             self.definition.severity.value,
+            self.arguments,
         )
 
 
@@ -246,18 +248,31 @@ class AlarmManager:
             self._alarms.pop((alarm.definition.code, alarm.source), None)
         self.on_transition(transition)
 
-    def raise_alarm(self, code: AlarmCode, source: str = "", detail: str = "") -> Alarm:
+    def raise_alarm(
+        self,
+        code: AlarmCode,
+        source: str = "",
+        detail: str = "",
+        arguments: tuple[AlarmArgument, ...] = (),
+    ) -> Alarm:
         """The condition of alarm ``code`` at ``source`` is active (idempotent)."""
         definition = CATALOGUE[code]
         key = (code, source)
         alarm = self._alarms.get(key)
         if alarm is None:
             alarm = Alarm(
-                next(self._ids), definition, source, detail, AlarmState.NORMAL, self.wall_clock()
+                next(self._ids),
+                definition,
+                source,
+                detail,
+                AlarmState.NORMAL,
+                self.wall_clock(),
+                arguments,
             )
             self._alarms[key] = alarm
         elif alarm.state is AlarmState.RTN_UNACKED:
             alarm.detail = detail or alarm.detail
+            alarm.arguments = arguments or alarm.arguments
             alarm.raised_at = self.wall_clock()
         self._apply(alarm, AlarmAction.CONDITION_ON)
         return alarm

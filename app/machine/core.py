@@ -27,6 +27,7 @@ from app.machine.permissions import Facts
 from app.machine.production import Production
 from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.reset import ResetSequence, ResetStep
+from app.machine.snapshot import AlarmArgument
 from app.machine.states import (
     LATCHED_STATES,
     Event,
@@ -129,10 +130,16 @@ class ControllerCore:
         if new is not MachineState.MANUAL:
             self.mode = Mode.AUTOMATIC
 
-    def _fault(self, code: AlarmCode, source: str, detail: str) -> None:
+    def _fault(
+        self,
+        code: AlarmCode,
+        source: str,
+        detail: str,
+        arguments: tuple[AlarmArgument, ...] = (),
+    ) -> None:
         """Raise a fault alarm, stop at once and latch ERROR (IEC 60204-1 stop category 1:
         the drives quick-stop, then lose power)."""
-        self.alarms.raise_alarm(code, source, detail)
+        self.alarms.raise_alarm(code, source, detail, arguments)
         if code is AlarmCode.GAUGE_DISCONNECTED:
             self.devices.gauge_lost()  # Reset brings the gauge up again
         if self.state in LATCHED_STATES:
@@ -164,7 +171,7 @@ class ControllerCore:
             self.devices.call(self.axes.quick_stop_all)
 
     def _apply(self, finding: Finding) -> None:
-        self._fault(finding.code, finding.source, finding.detail)
+        self._fault(finding.code, finding.source, finding.detail, finding.arguments)
 
     def _supervise(self) -> None:
         cycle = self.cycle

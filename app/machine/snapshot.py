@@ -44,6 +44,16 @@ class AxisView:
 
 
 @dataclass(frozen=True)
+class AlarmArgument:
+    """One value an alarm is about (the axis, the value measured, its limit), kept as data
+    beside the text so that a plant system can read it without parsing words."""
+
+    name: str
+    value: float | int | str
+    unit: str = ""
+
+
+@dataclass(frozen=True)
 class AlarmView:
     alarm_id: int
     code: str
@@ -52,6 +62,19 @@ class AlarmView:
     state: AlarmState
     raised_at: float  # epoch seconds
     severity: str  # "fault" (stops the machine) or "warning"
+    arguments: tuple[AlarmArgument, ...] = ()
+
+
+@dataclass(frozen=True)
+class BarrelView:
+    """The barrel being raised: how many staves are done, how many more the mean width so
+    far needs (None before the first), and the gap still open (None before the first)."""
+
+    number: int
+    staves_done: int
+    staves_left: int | None
+    gap_mm: float | None
+    closed: bool
 
 
 @dataclass(frozen=True)
@@ -137,6 +160,7 @@ class MachineSnapshot:
     message: Refusal | None = None  # the last refusal or notice for the operator
     io_points: tuple[IoPoint, ...] = ()  # every input, then every output, in image order
     pendant: PendantView = field(default_factory=PendantView)
+    barrel: BarrelView | None = None  # the barrel being raised (None: single staves)
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Protocol
 
@@ -11,13 +12,14 @@ from app.data.recipe import Recipe
 from app.drivers.contracts import InputImage, MachineBackend, OutputImage
 from app.machine.alarms import AlarmManager
 from app.machine.axes import AxisGroup
+from app.machine.barrel_set import BarrelSet
 from app.machine.cycle import AutomaticCycle
 from app.machine.homing import HomingSequence
 from app.machine.manual import ManualControl
 from app.machine.pendant.jog_sources import PendantJog
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.refusals import Refusal
-from app.machine.snapshot import AxisView, CycleView, IoPoint, MachineSnapshot
+from app.machine.snapshot import AxisView, BarrelView, CycleView, IoPoint, MachineSnapshot
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState, Mode
 
 
@@ -43,6 +45,7 @@ class MachineController(Protocol):
     message: Refusal | None
     io_points: tuple[IoPoint, ...]
     pendant_jog: PendantJog
+    barrel: BarrelSet | None
 
     @property
     def pieces_shift(self) -> int: ...
@@ -137,4 +140,18 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         allowed=allowed_commands(c.facts()),
         message=c.message,
         io_points=c.io_points,
+        barrel=barrel_view(c.barrel),
+    )
+
+
+def barrel_view(barrel: BarrelSet | None) -> BarrelView | None:
+    if barrel is None:
+        return None
+    gap_mm = barrel.gap_mm
+    return BarrelView(
+        number=barrel.number,
+        staves_done=len(barrel.staves),
+        staves_left=barrel.staves_left_estimate(),
+        gap_mm=gap_mm if math.isfinite(gap_mm) else None,
+        closed=barrel.closed,
     )

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from app.config import AxisConfig
 from app.drivers.contracts import AxisFeedback, InputImage
 from app.machine.alarms import AlarmCode
+from app.machine.snapshot import AlarmArgument
 from app.machine.states import MOVING_STATES, MachineState
 
 FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
@@ -184,6 +185,32 @@ VIOLATION_ALARMS = {
 }
 
 
+_MEASURED_KINDS = frozenset(
+    {
+        ViolationKind.FOLLOWING_ERROR,
+        ViolationKind.LIMIT_POSITIVE,
+        ViolationKind.LIMIT_NEGATIVE,
+        ViolationKind.SOFT_LIMIT,
+    }
+)
+
+
+def violation_arguments(
+    violation: Violation, axes: Mapping[str, AxisConfig]
+) -> tuple[AlarmArgument, ...]:
+    """The axis, and the value and limit where both are numbers in the axis' unit."""
+    axis = AlarmArgument("axis", violation.axis)
+    if violation.kind not in _MEASURED_KINDS or not math.isfinite(violation.value):
+        return (axis,)
+    config = axes.get(violation.axis)
+    unit = config.unit if config is not None else ""
+    return (
+        axis,
+        AlarmArgument("value", violation.value, unit),
+        AlarmArgument("limit", violation.limit, unit),
+    )
+
+
 @dataclass(frozen=True)
 class Finding:
     """One fault to raise: the alarm, where, and the detail for the operator."""
@@ -191,6 +218,7 @@ class Finding:
     code: AlarmCode
     source: str
     detail: str = ""
+    arguments: tuple[AlarmArgument, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -247,7 +275,8 @@ def supervise(
         if fb.faulted:
             text = EMERGENCY_TEXTS.get(fb.fault_code, "")
             detail = f"fault code 0x{fb.fault_code:04X} {text}".strip()
-            faults.append(Finding(drive_fault_code(fb), name, detail))
+            arguments = (AlarmArgument("axis", name), AlarmArgument("fault_code", fb.fault_code))
+            faults.append(Finding(drive_fault_code(fb), name, detail, arguments))
         else:
             # Out of FAULT: those conditions are normal again. E013 is an event, cleared
             # by Reset.
@@ -255,7 +284,12 @@ def supervise(
     if motion.cycle_moving:
         for violation in check_feedback(feedback, setpoint, axes):
             faults.append(
-                Finding(VIOLATION_ALARMS[violation.kind], violation.axis, violation.message)
+                Finding(
+                    VIOLATION_ALARMS[violation.kind],
+                    violation.axis,
+                    violation.message,
+                    violation_arguments(violation, axes),
+                )
             )
         if not (feedback and all(fb.homed for fb in feedback.values())):
             faults.append(Finding(AlarmCode.HOME_LOST, "axes", "an axis lost its home position"))

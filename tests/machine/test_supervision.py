@@ -9,6 +9,7 @@ import pytest
 
 from app.drivers.contracts import AxisFeedback, InputImage
 from app.machine.alarms import AlarmCode
+from app.machine.snapshot import AlarmArgument
 from app.machine.states import MachineState
 from app.machine.supervision import (
     DRIVE_FAULT_ALARMS,
@@ -155,6 +156,10 @@ def test_a_drive_in_fault_is_named_by_its_cause(
     (finding,) = verdict(feedback=feedback).faults
     assert (finding.code, finding.source) == (code, "Y")
     assert finding.detail.startswith(f"fault code 0x{changes['fault_code']:04X}")
+    assert finding.arguments == (
+        AlarmArgument("axis", "Y"),
+        AlarmArgument("fault_code", changes["fault_code"]),
+    )
     assert not any(source == "Y" for _, source in verdict(feedback=feedback).normal)
 
 
@@ -166,4 +171,11 @@ def test_the_moving_cycle_checks_the_feedback_and_the_home() -> None:
     far = {**HOMED, "X": replace(HOMED["X"], following_error=99.0)}
     (finding,) = verdict(feedback=far, motion=CUTTING).faults
     assert (finding.code, finding.source) == (AlarmCode.FOLLOWING_ERROR, "X")
+    # The arguments a plant system reads: the axis, the value and its limit in mm.
+    limit = CONFIG.axes["X"].following_error_limit
+    assert finding.arguments == (
+        AlarmArgument("axis", "X"),
+        AlarmArgument("value", 99.0, "mm"),
+        AlarmArgument("limit", limit, "mm"),
+    )
     assert verdict(feedback=far, motion=IDLE).faults == ()
