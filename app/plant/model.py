@@ -19,6 +19,7 @@ from app import __version__
 from app.plant.nodesets import MACHINERY_URI, WOODWORKING_URI, nodeset_files
 from app.plant.settings import OpcuaSettings
 from app.plant.state_map import OFFLINE_FLAGS
+from app.plant.state_times import VALUE_NAMES as STATE_TIME_NAMES
 
 OWN_URI = "urn:stave-jointer:opcua"
 MACHINE_BROWSE_NAME = "StaveJointer"
@@ -35,11 +36,7 @@ VALUE_NAMES = (
     "RelativeRunsGood",
     "RelativeRunsAborted",
     "RelativeRunsTotal",
-    "RelativeMachineOnTime",
-    "RelativeStandbyTime",
-    "RelativeReadyTime",
-    "RelativeWorkingTime",
-    "RelativeErrorTime",
+    *STATE_TIME_NAMES,
     "ActualCycle",
     "AxisOverride",
     "FeedSpeed",
@@ -55,6 +52,11 @@ SPECIFIC: dict[str, tuple[ua.VariantType, object]] = {
     "ShiftProductionCsv": (ua.VariantType.String, ""),
     "PlantJob": (ua.VariantType.String, ""),
     "StateText": (ua.VariantType.String, ""),
+    "BarrelNumber": (ua.VariantType.UInt32, 0),
+    "BarrelStavesDone": (ua.VariantType.UInt32, 0),
+    "BarrelStavesPlanned": (ua.VariantType.UInt32, 0),
+    "BarrelGap_mm": (ua.VariantType.Double, 0.0),
+    "BarrelClosed": (ua.VariantType.Boolean, False),
 }
 
 

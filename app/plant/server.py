@@ -29,15 +29,17 @@ from app.data.production_counts import run_counts
 from app.data.recipe_files import RecipeFileError
 from app.data.shifts import ShiftPlan, current_shift
 from app.machine.commands import SelectRecipe
-from app.machine.snapshot import AlarmState, MachineSnapshot
+from app.machine.snapshot import AlarmState, BarrelView, MachineSnapshot
 from app.plant.access import CALLER, PlantRuleset, PlantUserManager, monotonic_clock
 from app.plant.alarm_events import AlarmChange, alarm_changes
 from app.plant.alarm_texts import alarm_titles
 from app.plant.jobs import PlantJob, PlantJobs
 from app.plant.login_throttle import LoginThrottle
+from app.plant.message_arguments import complete_argument_type, message_arguments
 from app.plant.model import WW_BASE_EVENT_TYPE_ID, MachineNodes, build_machine, load_models
 from app.plant.settings import OpcuaSettings
-from app.plant.state_map import WwUnitState, unit_flags, unit_mode, unit_state
+from app.plant.state_map import unit_flags, unit_mode, unit_state
+from app.plant.state_times import SAVE_EVERY_S, StateTimes, load_state_times, save_state_times
 from app.plant.trust import TrustList
 
 log = logging.getLogger(__name__)
@@ -45,12 +47,6 @@ log = logging.getLogger(__name__)
 APPLICATION_URI = "urn:stave-jointer:opcua:server"
 _EVENT_CATEGORY = {"fault": 4, "warning": 3}  # WwEventCategoryEnumeration ALARM, WARNING
 _SEVERITY = {"fault": 800, "warning": 400}
-_TIME_VALUES = {
-    WwUnitState.STANDBY: "RelativeStandbyTime",
-    WwUnitState.READY: "RelativeReadyTime",
-    WwUnitState.WORKING: "RelativeWorkingTime",
-    WwUnitState.ERROR: "RelativeErrorTime",
-}
 _EVENT_FIELD_TYPES = {
     "MessageId": ua.VariantType.String,
     "MessageName": ua.VariantType.String,
@@ -58,6 +54,7 @@ _EVENT_FIELD_TYPES = {
     "PathParts": ua.VariantType.String,
     "EventCategory": ua.VariantType.Int32,
     "LocalizedMessages": ua.VariantType.LocalizedText,
+    "Arguments": ua.VariantType.ExtensionObject,
 }
 
 
@@ -102,8 +99,9 @@ class PlantServer:
         self._written: dict[str, Any] = {}
         self._last: MachineSnapshot | None = None
         self._last_time = clock()
-        self._started = clock()
-        self._state_ms: dict[str, float] = {}
+        self._times = StateTimes()
+        self._argument_type: type = object
+        self._saved_at = clock()
         self._counted_total = -1
         self._start_counts: dict[str, int] | None = None
         self._events: Any = None
@@ -145,6 +143,8 @@ class PlantServer:
         self.server.set_certificate_validator(self._validate_client)
         await load_models(self.server, self._nodesets_dir)
         self.nodes = await build_machine(self.server, self.settings)
+        self._argument_type = await complete_argument_type(self.server, self.nodes.ww)
+        self._times = load_state_times(self.db_path, time.time())
         await self._add_methods(self.nodes)
         self._events = await self.server.get_event_generator(
             ua.NodeId(WW_BASE_EVENT_TYPE_ID, self.nodes.ww), self.nodes.events.nodeid
@@ -157,7 +157,16 @@ class PlantServer:
         log.info("OPC UA server listening on %s", self.settings.endpoint_url)
 
     async def stop(self) -> None:
+        self._save_times()
         await self.server.stop()
+
+    def _save_times(self) -> None:
+        """Keep the absolute state times (a busy or missing database costs only this save)."""
+        self._saved_at = self._clock()
+        try:
+            save_state_times(self._times, self.db_path, time.time())
+        except Exception as exc:  # the plant connection outlives a database that is busy
+            log.warning("OPC UA: state times not saved: %s", exc)
 
     async def _validate_client(
         self, cert: x509.Certificate, _app: ua.ApplicationDescription
@@ -291,16 +300,11 @@ class PlantServer:
         now = self._clock()
         flags = unit_flags(snapshot)
         state = unit_state(flags)
-        previous_state = unit_state(unit_flags(self._last))
-        elapsed_ms = (now - self._last_time) * 1000.0
+        # The flags of the snapshot before held over the time since it came.
+        self._times.add(unit_flags(self._last), (now - self._last_time) * 1000.0)
         self._last_time = now
-        bucket = _TIME_VALUES.get(previous_state)
-        if bucket is not None:
-            self._state_ms[bucket] = self._state_ms.get(bucket, 0.0) + elapsed_ms
-        if previous_state is not WwUnitState.OFFLINE:
-            self._state_ms["RelativeMachineOnTime"] = (
-                self._state_ms.get("RelativeMachineOnTime", 0.0) + elapsed_ms
-            )
+        if now - self._saved_at >= SAVE_EVERY_S:
+            self._save_times()
         for name, value in flags.as_browse_names().items():
             if name in nodes.flags:
                 await self._write(f"flag.{name}", nodes.flags[name], value, ua.VariantType.Boolean)
@@ -308,16 +312,8 @@ class PlantServer:
         await self._write(
             "mode", nodes.current_mode, int(unit_mode(snapshot)), ua.VariantType.Int32
         )
-        for name in _TIME_VALUES.values():
-            await self._write(
-                name, nodes.values[name], int(self._state_ms.get(name, 0.0)), ua.VariantType.UInt64
-            )
-        await self._write(
-            "RelativeMachineOnTime",
-            nodes.values["RelativeMachineOnTime"],
-            int(self._state_ms.get("RelativeMachineOnTime", 0.0)),
-            ua.VariantType.UInt64,
-        )
+        for name, ms in self._times.values().items():
+            await self._write(name, nodes.values[name], ms, ua.VariantType.UInt64)
         if snapshot is not None:
             await self._publish_machine(snapshot)
             for change in alarm_changes(self._last.alarms if self._last else (), snapshot.alarms):
@@ -347,9 +343,24 @@ class PlantServer:
         if snapshot.cycle.r_mm is not None:
             await self._write_own("LastR_mm", snapshot.cycle.r_mm, ua.VariantType.Double)
         await self._write_own("PiecesThisShift", snapshot.pieces_shift, ua.VariantType.UInt64)
+        await self._publish_barrel(snapshot.barrel)
         if snapshot.pieces_total != self._counted_total:
             self._counted_total = snapshot.pieces_total
             await self._publish_counts()
+
+    async def _publish_barrel(self, barrel: BarrelView | None) -> None:
+        """The barrel being raised; zeros and an empty gap when staves are cut singly."""
+        done = barrel.staves_done if barrel else 0
+        left = barrel.staves_left if barrel and barrel.staves_left is not None else 0
+        gap = barrel.gap_mm if barrel and barrel.gap_mm is not None else 0.0
+        u32 = ua.VariantType.UInt32
+        await self._write_own("BarrelNumber", barrel.number if barrel else 0, u32)
+        await self._write_own("BarrelStavesDone", done, u32)
+        await self._write_own("BarrelStavesPlanned", done + left, u32)
+        await self._write_own("BarrelGap_mm", gap, ua.VariantType.Double)
+        await self._write_own(
+            "BarrelClosed", bool(barrel and barrel.closed), ua.VariantType.Boolean
+        )
 
     async def _publish_counts(self) -> None:
         """Counters from the database, the one record of every board (read when the
@@ -402,6 +413,7 @@ class PlantServer:
         event.LocalizedMessages = [
             ua.LocalizedText(text, locale) for locale, text in titles.items()
         ]
+        event.Arguments = message_arguments(alarm.arguments, self._argument_type)
         event.Severity = _SEVERITY.get(alarm.severity, 100)
         event.SourceName = "StaveJointer"
         event.SourceNode = self.nodes.machine.nodeid if self.nodes else ua.NodeId()

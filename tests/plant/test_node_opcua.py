@@ -151,6 +151,9 @@ def test_an_unknown_client_certificate_is_refused_until_trusted(plant: Plant) ->
         node.close()
     trusted = list((plant.tmp / "opcua-pki" / "trusted").glob("*.der"))
     assert len(trusted) == 1
+    # What the System screen's OPC UA page reads of the connection.
+    status = plant.feed.plant_status()
+    assert status.listening and status.pki_dir == plant.tmp / "opcua-pki"
 
 
 def test_browse_identification_and_state_by_standard_names(plant: Plant) -> None:
@@ -171,6 +174,7 @@ def test_browse_identification_and_state_by_standard_names(plant: Plant) -> None
                 "year": [*ident, "Machinery:YearOfConstruction"],
                 "state": CURRENT_STATE,
                 "machine_on": [*STATE, "Woodworking:Flags", "Woodworking:MachineOn"],
+                "staves": [*SPECIFIC, "own:BarrelStavesDone"],
             },
         )
         assert values["ok"], values
@@ -183,6 +187,14 @@ def test_browse_identification_and_state_by_standard_names(plant: Plant) -> None
         assert v["software"] == __version__
         assert v["year"] == plant.config.opcua.year_of_construction
         assert v["machine_on"] is True
+        assert v["staves"] == 0  # single staves: no barrel
+        on_time = {"on_ms": [*STATE, "Woodworking:Values", "Woodworking:AbsoluteMachineOnTime"]}
+        assert wait_until(
+            lambda: (
+                (plant.pump(0.2) or True) and node.ask("read", paths=on_time)["values"]["on_ms"] > 0
+            ),
+            30.0,
+        )
         expected_state = unit_state(unit_flags(plant.link.latest()))
         assert v["state"] == int(expected_state)
     finally:
@@ -242,6 +254,14 @@ def test_subscribed_state_counters_and_alarm_events_while_staves_are_cut(plant: 
         assert first["severity"] == 800 and first["category"] == 4  # ALARM
         assert first["message"].startswith("E010 Drive fault")
         assert first["message"].endswith("[active, unacknowledged]")  # ISA-18.2 state
+        # Arguments as WwMessageArgumentDataType: the axis and the drive's fault code, each
+        # with its name and data type (node-opcua decodes a subtype of the standard Argument
+        # with Argument's decoder: the fields up to Description).
+        arguments = {a["name"]: a for a in first["arguments"]}
+        assert set(arguments) == {"axis", "fault_code"}, first["arguments"]
+        assert arguments["axis"]["dataType"] == "ns=0;i=12"  # String
+        assert arguments["fault_code"]["dataType"] == "ns=0;i=8"  # Int64
+        assert {a["valueRank"] for a in arguments.values()} == {-1}
     finally:
         node.close()
         plant.feed.send(cmd.ClearFaults())

@@ -3,6 +3,7 @@ jobs, users in the database, and the English/Slovenian alarm titles."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -16,11 +17,17 @@ from app.data.plant_users import (
     list_plant_users,
     remove_plant_user,
 )
+from app.geometry.barrel_section import BarrelSection
+from app.machine.barrel_set import BarrelSet
 from app.machine.snapshot import AlarmState, AlarmView
+from app.machine.snapshot_view import barrel_view
 from app.plant.alarm_events import alarm_changes
 from app.plant.alarm_texts import alarm_titles
 from app.plant.login_throttle import LoginThrottle
+from app.plant.state_map import OFFLINE_FLAGS, UnitFlags
+from app.plant.state_times import StateTimes, load_state_times, save_state_times
 from app.plant.trust import TrustList
+from tests.plant.certificates import client_certificate_der
 
 
 def test_opcua_settings_are_checked_like_every_key() -> None:
@@ -74,27 +81,7 @@ def test_plant_users_hashed_in_the_database(tmp_path: Path) -> None:
 
 
 def test_trust_list_accept_and_reject(tmp_path: Path) -> None:
-    from datetime import UTC, datetime, timedelta
-
-    from cryptography import x509
-    from cryptography.hazmat.primitives import hashes
-    from cryptography.hazmat.primitives.asymmetric import rsa
-    from cryptography.hazmat.primitives.serialization import Encoding
-
-    key = rsa.generate_private_key(public_exponent=65537, key_size=2048)
-    name = x509.Name([x509.NameAttribute(x509.NameOID.COMMON_NAME, "client")])
-    now = datetime.now(UTC)
-    cert = (
-        x509.CertificateBuilder()
-        .subject_name(name)
-        .issuer_name(name)
-        .public_key(key.public_key())
-        .serial_number(1)
-        .not_valid_before(now - timedelta(days=1))
-        .not_valid_after(now + timedelta(days=1))
-        .sign(key, hashes.SHA256())
-    )
-    der = cert.public_bytes(Encoding.DER)
+    der = client_certificate_der()
     trust = TrustList(tmp_path)
     trust.create_folders()
     assert not trust.is_trusted(der)
@@ -127,3 +114,55 @@ def test_alarm_changes_include_the_return_to_normal() -> None:
 def test_alarm_titles_in_english_and_slovenian() -> None:
     titles = alarm_titles("E001")
     assert titles["en"] == "Emergency stop" and titles["sl"] == "Zasilna zaustavitev"
+
+
+READY_FLAGS = UnitFlags(
+    machine_on=True,
+    power_present=True,
+    machine_initialized=True,
+    emergency=False,
+    calibrated=True,
+    error=False,
+    alarm=False,
+    warning=False,
+    recipe_in_run=False,
+)
+
+
+def test_state_times_count_by_condition_and_continue_after_a_restart(tmp_path: Path) -> None:
+    times = StateTimes()
+    times.add(READY_FLAGS, 1000.0)
+    cutting = replace(READY_FLAGS, recipe_in_run=True, workpiece_present=True)
+    times.add(cutting, 500.0)
+    times.add(replace(READY_FLAGS, recipe_in_run=True, wait_load=True), 300.0)
+    times.add(OFFLINE_FLAGS, 200.0)
+    values = times.values()
+    assert values["RelativeReadyTime"] == 1000 and values["RelativeWorkingTime"] == 800
+    assert values["RelativeMachineOnTime"] == values["AbsolutePowerPresentTime"] == 1800
+    assert values["AbsoluteProductionTime"] == 500
+    assert values["AbsoluteProductionWithoutWorkpieceTime"] == 300
+    assert values["AbsoluteProductionWaitWorkpieceTime"] == 300
+    assert values["AbsoluteMachineOffTime"] == 200
+    save_state_times(times, tmp_path / "s.db", saved_at=1000.0)
+    # Started again 30 s later: the absolute times go on, the relative ones start at zero,
+    # and the 30 s the machine was off count as off.
+    again = load_state_times(tmp_path / "s.db", started_at=1030.0).values()
+    assert again["AbsoluteReadyTime"] == 1000 and again["RelativeReadyTime"] == 0
+    assert again["AbsoluteMachineOffTime"] == 30200
+    assert StateTimes.from_json("{not json", 0.0).values() == StateTimes().values()
+
+
+def test_barrel_view_for_the_plant() -> None:
+    assert barrel_view(None) is None
+    barrel = BarrelSet(BarrelSection.circle(600.0), 80.0)
+    empty = barrel_view(barrel)
+    assert empty is not None and (empty.staves_done, empty.staves_left, empty.gap_mm) == (
+        0,
+        None,
+        None,
+    )
+    for _ in range(3):
+        barrel = barrel.with_stave(barrel.place(100.0))
+    view = barrel_view(barrel)
+    assert view is not None and view.staves_done == 3 and not view.closed
+    assert view.staves_left == barrel.staves_left_estimate() and view.gap_mm == barrel.gap_mm

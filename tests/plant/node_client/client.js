@@ -127,15 +127,18 @@ async function subscribe(cmd) {
   }
   if (cmd.events) {
     const nodeId = await resolve(cmd.events);
-    const fields = ["Message", "Severity", `${ns.Woodworking}:MessageId`, `${ns.Woodworking}:LocalizedMessages`, `${ns.Woodworking}:EventCategory`];
+    const fields = ["Message", "Severity", `${ns.Woodworking}:MessageId`, `${ns.Woodworking}:LocalizedMessages`, `${ns.Woodworking}:EventCategory`, `${ns.Woodworking}:Arguments`];
     const item = await subscription.monitor({ nodeId, attributeId: AttributeIds.EventNotifier },
       { samplingInterval: 0, discardOldest: false, queueSize: 1000, filter: constructEventFilter(fields) }, TimestampsToReturn.Both);
     item.on("changed", (eventFields) => {
       try {
-        const [message, severity, messageId, localized, category] = eventFields.map((f) => f.value);
+        const [message, severity, messageId, localized, category, args] = eventFields.map((f) => f.value);
         say({ event: true, message: message && message.text, severity, messageId,
           localized: Array.from(localized || []).filter((l) => l).map((l) => ({ locale: l.locale, text: l.text })),
-          category });
+          category,
+          arguments: Array.from(args || []).filter((a) => a).map((a) => ({
+            name: a.name, dataType: a.dataType && a.dataType.toString(), valueRank: a.valueRank,
+            unit: a.description && a.description.text })) });
       } catch (err) {
         say({ event: true, error: String(err), raw: eventFields.map((f) => String(f.value)) });
       }
