@@ -69,6 +69,9 @@ ALLOWED: dict[str, tuple[str, ...]] = {
         "app.machine.refusals",
         "app.machine.snapshot",
         "app.machine.states",
+        "app.plant.settings",
+        "app.plant.status",
+        "app.plant.trust",
     ),
     "plant": (
         VERSION,

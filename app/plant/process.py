@@ -28,6 +28,7 @@ from app.machine.link import MachineLink
 from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.snapshot import MachineSnapshot, PlanPreview
 from app.plant.settings import OpcuaSettings
+from app.plant.status import LISTENING, PlantStatus
 
 log = logging.getLogger(__name__)
 
@@ -66,7 +67,7 @@ async def _serve(
         log.exception("OPC UA server did not start")
         notice(f"OPC UA server did not start: {exc}")
         return
-    notice(f"OPC UA server listening on {settings.endpoint_url}")
+    notice(f"{LISTENING} {settings.endpoint_url}")
     for warning in settings.insecure_choices():
         notice(f"warning: OPC UA {warning} is on (commissioning only)")
     try:
@@ -128,11 +129,16 @@ class PlantProcess:
         process: multiprocessing.process.BaseProcess,
         inbox: multiprocessing.queues.Queue[Any],
         outbox: multiprocessing.queues.Queue[Any],
+        settings: OpcuaSettings,
+        pki_dir: Path,
     ) -> None:
         self._process = process
         self._inbox = inbox
         self._outbox = outbox
+        self.settings = settings
+        self.pki_dir = pki_dir
         self.notices: list[str] = []
+        self._listening_notice = ""
 
     @classmethod
     def start(
@@ -163,7 +169,7 @@ class PlantProcess:
             daemon=True,
         )
         process.start()
-        return cls(process, inbox, outbox)
+        return cls(process, inbox, outbox, settings, pki_dir)
 
     def publish(self, snapshot: MachineSnapshot | None) -> None:
         """Hand over a snapshot; never waits (a full queue drops it)."""
@@ -181,9 +187,18 @@ class PlantProcess:
             if isinstance(item, SelectRecipe):
                 found.append(item)
             elif isinstance(item, tuple) and len(item) == 2 and item[0] == "notice":
-                self.notices.append(str(item[1]))
+                text = str(item[1])
+                if text.startswith(LISTENING):
+                    self._listening_notice = text  # kept when later notices push it out
+                self.notices.append(text)
                 del self.notices[:-20]
         return found
+
+    def status(self) -> PlantStatus:
+        notices = tuple(self.notices)
+        if self._listening_notice and self._listening_notice not in notices:
+            notices = (self._listening_notice, *notices)
+        return PlantStatus(self.settings, self.pki_dir, self.alive(), notices)
 
     def alive(self) -> bool:
         return self._process.is_alive()
@@ -234,6 +249,9 @@ class PlantFeedLink:
 
     def plan(self, plan_id: int) -> PlanPreview | None:
         return self._link.plan(plan_id)
+
+    def plant_status(self) -> PlantStatus:
+        return self._plant.status()
 
     def alive(self) -> bool:
         return self._link.alive()

@@ -244,6 +244,14 @@ def render_screenshots(
             driver.until(lambda s: s.inputs.clamps_closed, "clamps closed by hand")
             window.show_screen("io")
             shoot("io")
+
+            # The plant connection's page (the screenshots run without the OPC UA server).
+            if technician is not None:
+                window.session.set_user(technician)
+            window.show_screen("system")
+            window.page("system").show_group("opcua")  # type: ignore[attr-defined]
+            shoot("system-opcua")
+            window.session.logout()
         finally:
             window.poller.stop()
             window.close()

@@ -46,8 +46,10 @@ from app.machine.commands import (
     RemoveBoard,
 )
 from app.machine.snapshot import MachineSnapshot
+from app.plant.status import PlantStatus, PlantStatusSource
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_clock, format_number
+from app.screens.opcua_page import OpcuaPage
 from app.screens.texts import parameter_text, role_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keypad import NumberKeypad
@@ -97,7 +99,7 @@ class SystemScreen(Screen):
         group_grid = QGridLayout()
         group_grid.setSpacing(6)
         button_group = QButtonGroup(self)
-        keys = [*groups(), "log", "simulation"]
+        keys = [*groups(), "log", "opcua", "simulation"]
         columns = (len(keys) + 2) // 2
         for index, key in enumerate(keys):
             button = touch_button(f"group_{key}", "tab")
@@ -185,6 +187,8 @@ class SystemScreen(Screen):
         self.pages.addWidget(log_page)
         self.pages.addWidget(sim_page)
         self.param_page, self.log_page, self.sim_page = param_page, log_page, sim_page
+        self.opcua_page = OpcuaPage(context, self.plant_status)
+        self.pages.addWidget(self.opcua_page)
 
         settings_layout = QVBoxLayout(settings)
         settings_layout.setContentsMargins(0, 0, 0, 0)
@@ -218,6 +222,7 @@ class SystemScreen(Screen):
             "jog": self.tr("Jogging"),
             "production": self.tr("Shifts"),
             "log": self.tr("Change log"),
+            "opcua": self.tr("OPC UA"),
             "simulation": self.tr("Simulation"),
         }
         return titles.get(key, key)
@@ -256,6 +261,7 @@ class SystemScreen(Screen):
         self.load_board_button.setText(self.tr("Put a board in"))
         self.remove_board_button.setText(self.tr("Take the board off"))
         self.replace_board_button.setText(self.tr("Replace the board"))
+        self.opcua_page.retranslate()
         if self.unlocked:
             self.show_group(self.group)
 
@@ -283,6 +289,9 @@ class SystemScreen(Screen):
             self.refresh_log()
         elif key == "simulation":
             self.pages.setCurrentWidget(self.sim_page)
+        elif key == "opcua":
+            self.pages.setCurrentWidget(self.opcua_page)
+            self.opcua_page.refresh()
         else:
             self.pages.setCurrentWidget(self.param_page)
             self.fill_parameters(key)
@@ -397,6 +406,11 @@ class SystemScreen(Screen):
             )
             for column, text in enumerate(values):
                 self.log_table.setItem(row, column, QTableWidgetItem(text))
+
+    def plant_status(self) -> PlantStatus | None:
+        """The plant connection's state (None: the panel runs without one)."""
+        link = self.context.link
+        return link.plant_status() if isinstance(link, PlantStatusSource) else None
 
     # -- simulation -------------------------------------------------------------------------------
 

@@ -1542,6 +1542,94 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>OpcuaPage</name>
+    <message>
+        <location filename="../../app/screens/opcua_page.py" line="+85" />
+        <source>OPC UA plant connection</source>
+        <translation>OPC UA plant connection</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Client certificates refused (not trusted yet). A plant system connects only after its certificate is trusted:</source>
+        <translation>Client certificates refused (not trusted yet). A plant system connects only after its certificate is trusted:</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Certificate</source>
+        <translation>Certificate</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Application</source>
+        <translation>Application</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Valid until</source>
+        <translation>Valid until</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Trust the selected certificate</source>
+        <translation>Trust the selected certificate</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Refresh</source>
+        <translation>Refresh</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Server off ([opcua] enabled = false in the configuration).</source>
+        <translation>Server off ([opcua] enabled = false in the configuration).</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Server running: plant systems can connect.</source>
+        <translation>Server running: plant systems can connect.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Server not running: %1</source>
+        <translation>Server not running: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Server not running: its process has ended (see opcua.log).</source>
+        <translation>Server not running: its process has ended (see opcua.log).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Server starting (loading the information model)...</source>
+        <translation>Server starting (loading the information model)...</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Warning: security policy None is on: clients may connect without signing or encryption.</source>
+        <translation>Warning: security policy None is on: clients may connect without signing or encryption.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Warning: anonymous access is on: clients may read without a user.</source>
+        <translation>Warning: anonymous access is on: clients may read without a user.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Use these for commissioning only ([opcua] configuration).</source>
+        <translation>Use these for commissioning only ([opcua] configuration).</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Endpoint: %1</source>
+        <translation>Endpoint: %1</translation>
+    </message>
+    <message>
+        <location line="+55" />
+        <source>Certificate %1 trusted by %2 (logged).</source>
+        <translation>Certificate %1 trusted by %2 (logged).</translation>
+    </message>
+</context>
+<context>
     <name>Parameters</name>
     <message>
         <location filename="catalogue_strings.py" line="+31" />
@@ -2334,7 +2422,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+208" />
+        <location filename="../../app/screens/system_screen.py" line="+212" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -2382,6 +2470,11 @@ shift</translation>
         <location line="+1" />
         <source>Change log</source>
         <translation>Change log</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OPC UA</source>
+        <translation>OPC UA</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2462,7 +2555,7 @@ Log in as technician or service to change them.</translation>
         <translation>Replace the board</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+63" />
         <source>needs %1</source>
         <translation>needs %1</translation>
     </message>
@@ -2477,7 +2570,7 @@ Log in as technician or service to change them.</translation>
         <translation>%1 set to %2 (logged).</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+30" />
         <source>Fault injected: %1</source>
         <translation>Fault injected: %1</translation>
     </message>

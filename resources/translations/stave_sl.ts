@@ -1542,6 +1542,94 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>OpcuaPage</name>
+    <message>
+        <location filename="../../app/screens/opcua_page.py" line="+85"/>
+        <source>OPC UA plant connection</source>
+        <translation>Povezava OPC UA z obratom</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Client certificates refused (not trusted yet). A plant system connects only after its certificate is trusted:</source>
+        <translation>Zavrnjena potrdila odjemalcev (še niso zaupanja vredna). Sistem obrata se poveže šele, ko njegovo potrdilo označite kot zaupanja vredno:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Certificate</source>
+        <translation>Potrdilo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Application</source>
+        <translation>Aplikacija</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Valid until</source>
+        <translation>Veljavno do</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Trust the selected certificate</source>
+        <translation>Zaupaj izbranemu potrdilu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Osveži</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Server off ([opcua] enabled = false in the configuration).</source>
+        <translation>Strežnik izklopljen ([opcua] enabled = false v konfiguraciji).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Server running: plant systems can connect.</source>
+        <translation>Strežnik teče: sistemi obrata se lahko povežejo.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Server not running: %1</source>
+        <translation>Strežnik ne teče: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Server not running: its process has ended (see opcua.log).</source>
+        <translation>Strežnik ne teče: njegov proces se je končal (glejte opcua.log).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Server starting (loading the information model)...</source>
+        <translation>Strežnik se zaganja (nalaga informacijski model) ...</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Warning: security policy None is on: clients may connect without signing or encryption.</source>
+        <translation>Opozorilo: varnostna politika None je vklopljena: odjemalci se lahko povežejo brez podpisa in šifriranja.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Warning: anonymous access is on: clients may read without a user.</source>
+        <translation>Opozorilo: anonimni dostop je vklopljen: odjemalci lahko berejo brez uporabnika.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Use these for commissioning only ([opcua] configuration).</source>
+        <translation>To uporabljajte samo za zagon naprave (konfiguracija [opcua]).</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Endpoint: %1</source>
+        <translation>Končna točka: %1</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Certificate %1 trusted by %2 (logged).</source>
+        <translation>Potrdilo %1 je označil kot zaupanja vredno %2 (zabeleženo).</translation>
+    </message>
+</context>
+<context>
     <name>Parameters</name>
     <message>
         <location filename="catalogue_strings.py" line="+31"/>
@@ -2334,7 +2422,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+208"/>
+        <location filename="../../app/screens/system_screen.py" line="+212"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -2382,6 +2470,11 @@ izmena</translation>
         <location line="+1"/>
         <source>Change log</source>
         <translation>Dnevnik sprememb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OPC UA</source>
+        <translation>OPC UA</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2462,7 +2555,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <translation>Zamenjaj desko</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+63"/>
         <source>needs %1</source>
         <translation>potrebna raven: %1</translation>
     </message>
@@ -2477,7 +2570,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <translation>%1 nastavljen na %2 (zabeleženo).</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+30"/>
         <source>Fault injected: %1</source>
         <translation>Vstavljena napaka: %1</translation>
     </message>
