@@ -23,6 +23,7 @@ from pathlib import Path
 from app.config import MachineConfig, load_config
 from app.machine import commands as cmd
 from app.machine.process_link import ProcessMachineLink
+from app.machine.snapshot import MachineSnapshot
 from app.machine.states import MachineState
 
 
@@ -38,13 +39,17 @@ def bench_config(period_ms: float) -> MachineConfig:
     return replace(config, axes=axes, backend_settings=settings, period_s=period_ms / 1000.0)
 
 
-def keep_cutting(link: ProcessMachineLink) -> None:
-    snapshot = link.latest()
-    if (
+def ready_to_start(snapshot: MachineSnapshot | None) -> bool:
+    """READY, and Start allowed now (no refusal): the simulated operator presses Start."""
+    return (
         snapshot is not None
         and snapshot.state is MachineState.READY
-        and snapshot.allowed.get("Start") == ""
-    ):
+        and snapshot.allowed.get("Start") is None
+    )
+
+
+def keep_cutting(link: ProcessMachineLink) -> None:
+    if ready_to_start(link.latest()):
         link.send(cmd.Start())
 
 

@@ -30,9 +30,10 @@ import time
 from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from latency_bench import bench_config, keep_cutting, show
+from latency_bench import bench_config, keep_cutting, ready_to_start, show
 
 from app.data.database import Database
 from app.data.plant_users import PlantRole, add_plant_user
@@ -40,7 +41,6 @@ from app.data.production_counts import run_counts
 from app.machine import commands as cmd
 from app.machine.local_link import LocalMachineLink
 from app.machine.process_link import ProcessMachineLink
-from app.machine.states import MachineState
 from app.plant.process import PlantFeedLink, PlantProcess, default_pki_dir
 from app.plant.settings import OpcuaSettings
 from app.plant.state_map import unit_flags, unit_state
@@ -83,11 +83,29 @@ def trust_client(cert: Path, pki_dir: Path) -> None:
     (pki_dir / "trusted" / f"{thumbprint(der)}.der").write_bytes(der)
 
 
+async def _connect_unit(url: str, cert: Path, key: Path) -> tuple[Any, Any, int]:
+    """A client as a plant system connects (SignAndEncrypt, a user), the machine unit's
+    State/Machine node, and the Woodworking namespace index."""
+    from asyncua import Client
+
+    client = Client(url, timeout=30)
+    client.application_uri = "urn:stave-jointer:bench-client"
+    await client.set_security_string(f"Basic256Sha256,SignAndEncrypt,{cert},{key}")
+    client.set_user(USER)
+    client.set_password(PASSWORD)
+    await client.connect()
+    ww = await client.get_namespace_index(WW)
+    machinery = await client.get_namespace_index(MACHINERY)
+    own = await client.get_namespace_index(OWN)
+    unit = await client.nodes.objects.get_child(
+        [f"{machinery}:Machines", f"{own}:StaveJointer", f"{ww}:State", f"{ww}:Machine"]
+    )
+    return client, unit, ww
+
+
 async def _watch(
     endpoints: list[str], cert: Path, key: Path, seconds: float, out: multiprocessing.Queue
 ) -> None:  # type: ignore[type-arg]
-    from asyncua import Client
-
     received: list[tuple[int, str, object, float, float]] = []
 
     class Handler:
@@ -101,19 +119,7 @@ async def _watch(
 
     clients = []
     for index, url in enumerate(endpoints):
-        client = Client(url, timeout=30)
-        client.application_uri = "urn:stave-jointer:bench-client"
-        await client.set_security_string(f"Basic256Sha256,SignAndEncrypt,{cert},{key}")
-        client.set_user(USER)
-        client.set_password(PASSWORD)
-        await client.connect()
-        ww = await client.get_namespace_index(WW)
-        machinery = await client.get_namespace_index(MACHINERY)
-        own = await client.get_namespace_index(OWN)
-        machine = await client.nodes.objects.get_child(
-            [f"{machinery}:Machines", f"{own}:StaveJointer"]
-        )
-        unit = await machine.get_child([f"{ww}:State", f"{ww}:Machine"])
+        client, unit, ww = await _connect_unit(url, cert, key)
         nodes = [
             await unit.get_child([f"{ww}:Overview", f"{ww}:CurrentState"]),
             await unit.get_child([f"{ww}:Values", f"{ww}:AbsolutePiecesOut"]),
@@ -210,7 +216,7 @@ def run_plant(machines: int, seconds: float) -> None:
                 if state != last_state[index]:
                     last_state[index] = state
                     sent_states[index].append((state, snapshot.wall_time))
-                if snapshot.state is MachineState.READY and snapshot.allowed.get("Start") == "":
+                if ready_to_start(snapshot):
                     link.send(cmd.Start())
             last = now
             time.sleep(0.02)
@@ -269,9 +275,7 @@ def run_plant(machines: int, seconds: float) -> None:
     print(f"missed state changes: {missed_states}, counted staves not seen: {missed_pieces}")
 
 
-async def _subscribers(url: str, cert: Path, key: str, clients: int, seconds: float) -> int:
-    from asyncua import Client
-
+async def _subscribers(url: str, cert: Path, key: Path, clients: int, seconds: float) -> int:
     seen = 0
 
     class Handler:
@@ -281,18 +285,7 @@ async def _subscribers(url: str, cert: Path, key: str, clients: int, seconds: fl
 
     connected = []
     for _ in range(clients):
-        client = Client(url, timeout=30)
-        client.application_uri = "urn:stave-jointer:bench-client"
-        await client.set_security_string(f"Basic256Sha256,SignAndEncrypt,{cert},{key}")
-        client.set_user(USER)
-        client.set_password(PASSWORD)
-        await client.connect()
-        ww = await client.get_namespace_index(WW)
-        machinery = await client.get_namespace_index(MACHINERY)
-        own = await client.get_namespace_index(OWN)
-        unit = await client.nodes.objects.get_child(
-            [f"{machinery}:Machines", f"{own}:StaveJointer", f"{ww}:State", f"{ww}:Machine"]
-        )
+        client, unit, ww = await _connect_unit(url, cert, key)
         nodes = [await unit.get_child([f"{ww}:Overview", f"{ww}:CurrentState"])]
         for group in ("Flags", "Values"):
             nodes.extend(await (await unit.get_child([f"{ww}:{group}"])).get_children())
@@ -308,7 +301,7 @@ async def _subscribers(url: str, cert: Path, key: str, clients: int, seconds: fl
 def subscribers_main(
     url: str, cert: str, key: str, clients: int, seconds: float, out: multiprocessing.Queue
 ) -> None:  # type: ignore[type-arg]
-    out.put(asyncio.run(_subscribers(url, Path(cert), key, clients, seconds)))
+    out.put(asyncio.run(_subscribers(url, Path(cert), Path(key), clients, seconds)))
 
 
 def run_lateness(clients: int, seconds: float) -> None:
