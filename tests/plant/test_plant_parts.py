@@ -24,7 +24,7 @@ from app.machine.snapshot_view import barrel_view
 from app.plant.alarm_events import alarm_changes
 from app.plant.alarm_texts import alarm_titles
 from app.plant.login_throttle import LoginThrottle
-from app.plant.state_map import OFFLINE_FLAGS, UnitFlags
+from app.plant.state_map import OFFLINE_FLAGS
 from app.plant.state_times import StateTimes, load_state_times, save_state_times
 from app.plant.trust import TrustList
 from tests.plant.certificates import client_certificate_der
@@ -116,16 +116,8 @@ def test_alarm_titles_in_english_and_slovenian() -> None:
     assert titles["en"] == "Emergency stop" and titles["sl"] == "Zasilna zaustavitev"
 
 
-READY_FLAGS = UnitFlags(
-    machine_on=True,
-    power_present=True,
-    machine_initialized=True,
-    emergency=False,
-    calibrated=True,
-    error=False,
-    alarm=False,
-    warning=False,
-    recipe_in_run=False,
+READY_FLAGS = replace(
+    OFFLINE_FLAGS, machine_on=True, power_present=True, machine_initialized=True, calibrated=True
 )
 
 
