@@ -222,11 +222,29 @@ def test_subscribed_state_counters_and_alarm_events_while_staves_are_cut(plant: 
             recipe = db.get_recipe_by_name(BARRIQUE)
         assert recipe is not None and recipe.id is not None
         plant.feed.send(cmd.SelectRecipe(recipe.id))
+        plant.feed.send(cmd.StartBarrel())  # the barrique's staves are raised as a barrel
         start_total = plant.link.latest().pieces_total  # type: ignore[union-attr]
         plant.pump(1.0)
         assert plant.pump(
             200.0, until=lambda s: s.pieces_total >= start_total + 2, keep_cutting=True
         ), "two staves were not cut"
+        barrel = plant.link.latest().barrel  # type: ignore[union-attr]
+        assert barrel is not None and barrel.staves_done >= 2
+        progress = {
+            name: [*SPECIFIC, f"own:{name}"]
+            for name in ("BarrelStavesDone", "BarrelStavesPlanned", "BarrelGap_mm")
+        }
+        assert wait_until(
+            lambda: (
+                (plant.pump(0.1) or True)
+                and node.ask("read", paths=progress)["values"]["BarrelStavesDone"]
+                == plant.link.latest().barrel.staves_done  # type: ignore[union-attr]
+            ),
+            30.0,
+        )
+        seen = node.ask("read", paths=progress)["values"]
+        assert seen["BarrelStavesPlanned"] > seen["BarrelStavesDone"]  # the barrel is open
+        assert 0.0 < seen["BarrelGap_mm"] < 690.0
         plant.feed.send(cmd.Stop())
         assert plant.pump(60.0, until=lambda s: s.state is MachineState.READY)
         plant.feed.send(cmd.InjectFault("drive_fault", "Y"))
