@@ -5,6 +5,9 @@ up to 16 inputs (0x6000, "read input 8-bit") and 16 outputs (0x6200, "write outp
 Which terminal bit carries which machine function is configuration
 (``[backend.canopen.io.inputs]`` / ``[backend.canopen.io.outputs]``).
 
+Analog inputs (0x6401, ``[backend.canopen.io.analog]``: the handwheel's counter, the
+joystick) come in TPDO2 on every SYNC beside them, when any is wired.
+
 Inputs come in TPDO1 on every SYNC (the SYNC the motion backend sends after its setpoints),
 so they are as fresh as the axis feedback and a missing answer is noticed the same way.
 Outputs go out in RPDO1 with transmission type 255 (applied on receipt), when they change
@@ -26,6 +29,7 @@ from app.drivers.canopen.pdo import (
     download_layout,
     io_rpdo1,
     io_tpdo1,
+    io_tpdo2,
     pack_bits,
     unpack_bits,
 )
@@ -46,6 +50,9 @@ class CanopenIO(CanopenDevice, DigitalIO):
         self._io = settings.io
         self._label = f"I/O (node {self._io.node_id})"
         self._tpdo = io_tpdo1(self._io.input_bytes)
+        self._analog_subs = tuple(sorted(self._io.analog.values()))
+        self._analog_tpdo = io_tpdo2(self._analog_subs) if self._analog_subs else None
+        self._analog: dict[int, int] = {}  # 0x6401 sub-index -> last value
         self._rpdo = io_rpdo1(self._io.output_bytes)
         self._raw_inputs = 0
         self._input_seq = -1
@@ -64,6 +71,9 @@ class CanopenIO(CanopenDevice, DigitalIO):
         node_id = self._io.node_id
         self._bus.add_node(node_id, obj.build_io_od(node_id), self.owner, self._label)
         self._bus.subscribe(node_id, self._tpdo.cob_id(node_id), self._on_tpdo)
+        if self._analog_tpdo is not None:
+            self._bus.subscribe(node_id, self._analog_tpdo.cob_id(node_id), self._on_analog)
+        self._analog = {}
         self._input_seq = -1
         self._bad_frame = ""
 
@@ -78,6 +88,18 @@ class CanopenIO(CanopenDevice, DigitalIO):
             return
         self._input_seq = answered_sync(self._input_seq if self._input_seq >= 0 else None, seq)
 
+    def _on_analog(self, data: bytes, seq: int) -> None:
+        layout = f"<{len(self._analog_subs)}h"
+        try:
+            values = struct.unpack(layout, data)
+        except struct.error:
+            self._bad_frame = (
+                f"TPDO2 has {len(data)} bytes, expected {2 * len(self._analog_subs)}: "
+                "the node's PDO mapping differs"
+            )
+            return
+        self._analog = dict(zip(self._analog_subs, values, strict=True))
+
     def _configure_node(self, node_id: int) -> None:
         def write(index: int, sub: int, data: bytes) -> None:
             self._bus.sdo_download(node_id, index, sub, data, "PDO configuration")
@@ -86,6 +108,8 @@ class CanopenIO(CanopenDevice, DigitalIO):
             disable_pdo(write, True, number, node_id)
             disable_pdo(write, False, number, node_id)
         download_layout(write, self._tpdo, node_id)
+        if self._analog_tpdo is not None:
+            download_layout(write, self._analog_tpdo, node_id)
         download_layout(write, self._rpdo, node_id)
         for sub in range(1, self._io.output_bytes + 1):
             self._bus.sdo_download(
@@ -122,11 +146,18 @@ class CanopenIO(CanopenDevice, DigitalIO):
             if self._bad_frame:
                 raise self._lose(self._label, self._bad_frame)
             raw = self._raw_inputs
-        values = {
+            analog = self._analog
+        values: dict[str, bool | int | None] = {
             name: bool(raw >> bit & 1) != (name in self._io.inverted_inputs)
             for name, bit in self._io.inputs.items()
         }
-        return InputImage(**values)
+        for name, sub in self._io.analog.items():
+            value = analog.get(sub)
+            # 0x6401 is INTEGER16; a counter module's count is its 16 bits unsigned.
+            if value is not None and name == "handwheel_count":
+                value &= 0xFFFF
+            values[name] = value
+        return InputImage(**values)  # type: ignore[arg-type]
 
     def write_outputs(self, outputs: OutputImage) -> None:
         self._ensure_active()

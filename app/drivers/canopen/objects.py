@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from canopen.objectdictionary import (
     INTEGER8,
+    INTEGER16,
     INTEGER32,
     UNSIGNED8,
     UNSIGNED16,
@@ -63,6 +64,8 @@ DI_HOME_SWITCH = 1 << 2
 
 # ---- CiA 401 generic I/O profile ------------------------------------------------------------
 READ_INPUT_8BIT = 0x6000  # digital inputs, 8 per sub-index
+READ_ANALOG_INPUT_16BIT = 0x6401  # analog inputs (and a counter module's count), one per sub
+ANALOG_INPUTS = 4  # the builder's I/O node has four of them
 WRITE_OUTPUT_8BIT = 0x6200  # digital outputs, 8 per sub-index
 IO_BYTES = 4  # the builder's I/O node has 32 inputs and 32 outputs
 
@@ -231,10 +234,20 @@ def build_drive_od(node_id: int) -> ObjectDictionary:
 
 
 def build_io_od(node_id: int) -> ObjectDictionary:
-    """The CiA 401 objects of a digital I/O node with 32 inputs and 32 outputs."""
+    """The CiA 401 objects of an I/O node with 32 digital inputs, 32 outputs and four
+    16-bit analog inputs."""
     od = ObjectDictionary()  # type: ignore[no-untyped-call]
     od.node_id = node_id
     _communication_objects(od, node_id, 0x00030000 | PROFILE_IO)  # digital in + out, 401
     _array(od, "Read input 8-bit", READ_INPUT_8BIT, IO_BYTES, UNSIGNED8, "ro", mappable=True)
     _array(od, "Write output 8-bit", WRITE_OUTPUT_8BIT, IO_BYTES, UNSIGNED8, "rw", mappable=True)
+    _array(
+        od,
+        "Read analog input 16-bit",
+        READ_ANALOG_INPUT_16BIT,
+        ANALOG_INPUTS,
+        INTEGER16,
+        "ro",
+        mappable=True,
+    )
     return od

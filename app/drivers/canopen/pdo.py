@@ -118,6 +118,17 @@ def io_tpdo1(input_bytes: int) -> PdoLayout:
     )
 
 
+def io_tpdo2(analog_subs: tuple[int, ...]) -> PdoLayout:
+    """The I/O node's analog inputs (0x6401, the handwheel's counter, the joystick) on every
+    SYNC, in the order of their sub-indices."""
+    return PdoLayout(
+        False,
+        2,
+        TRANSMISSION_SYNC,
+        tuple(PdoEntry(obj.READ_ANALOG_INPUT_16BIT, sub, 16) for sub in analog_subs),
+    )
+
+
 def io_rpdo1(output_bytes: int) -> PdoLayout:
     return PdoLayout(
         True,

@@ -14,14 +14,14 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from app.config import AxisConfig, ConfigError, MachineConfig, Section
 from app.drivers.canopen.busload import MAX_BUS_LOAD, BusLoad, bus_load
 from app.drivers.canopen.master_heartbeat import CONSUMER_TIMEOUT_MAX_MS
 from app.drivers.canopen.pdo import cyclic_frames
-from app.drivers.contracts import DIGITAL_INPUTS, PENDANT_INPUTS, OutputImage
+from app.drivers.contracts import ANALOG_INPUTS, DIGITAL_INPUTS, PENDANT_INPUTS, OutputImage
 
 ROOT = "backend.canopen"
 BITRATES: tuple[int, ...] = (10_000, 20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)
@@ -92,6 +92,8 @@ class IoNodeSettings:
     inputs: Mapping[str, int]  # InputImage field -> input bit (0x6000, bit 0 = sub 1 bit 0)
     outputs: Mapping[str, int]  # OutputImage field -> output bit (0x6200)
     inverted_inputs: frozenset[str]  # functions whose terminal reads 0 when the function is on
+    # ANALOG_INPUTS name -> sub-index of 0x6401 (read analog input 16-bit); unwired absent
+    analog: Mapping[str, int] = field(default_factory=dict)
 
     @property
     def input_bytes(self) -> int:
@@ -252,8 +254,30 @@ def _read_io(table: _Table) -> IoNodeSettings:
         raise table.error(
             "inverted_inputs", inverted, "a list of input functions: " + ", ".join(INPUT_FUNCTIONS)
         )
+    analog = _read_analog(table.table("analog"))
     table.finish()
-    return IoNodeSettings(node_id, inputs, outputs, frozenset(inverted))
+    return IoNodeSettings(node_id, inputs, outputs, frozenset(inverted), analog)
+
+
+ANALOG_SUBS = 4  # sub-indices of 0x6401 on the I/O node
+
+
+def _read_analog(table: _Table) -> dict[str, int]:
+    """``[backend.canopen.io.analog]``: the 0x6401 sub-index of the handwheel's counter and
+    of each joystick axis, -1 (the default) when not wired."""
+    subs: dict[str, int] = {}
+    for name in ANALOG_INPUTS:
+        sub = table.integer(name, -1, -1, ANALOG_SUBS, " (0x6401 sub-index, -1: none)")
+        if sub == 0:
+            raise table.error(name, sub, "a sub-index from 1 (0 holds the number of inputs)")
+        if sub < 0:
+            continue
+        clash = [other for other, used in subs.items() if used == sub]
+        if clash:
+            raise table.error(name, sub, f"a sub-index no other input uses ({clash[0]} has {sub})")
+        subs[name] = sub
+    table.finish()
+    return subs
 
 
 def parse_settings(raw: Mapping[str, Any], config: MachineConfig) -> CanopenSettings:

@@ -7,6 +7,9 @@ and only a steady stream of writes keeps it fed.
 
 Inputs listed in ``inverted`` are wired as normally-closed contacts and read inverted, so
 that :class:`InputImage` always says "healthy" for True.
+
+Registers listed in ``[backend.modbus.io.registers]`` (the handwheel's counter, the joystick's
+analog inputs) are read in the same exchange, one "read input registers" (function 4).
 """
 
 from __future__ import annotations
@@ -23,7 +26,8 @@ from app.drivers.contracts import (
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
 from app.drivers.modbus.device import BusDevice
 from app.drivers.modbus.link import ModbusLink
-from app.drivers.modbus.settings import CouplerSettings
+from app.drivers.modbus.codec import decode
+from app.drivers.modbus.settings import CouplerSettings, DataType, RegisterTable, WordOrder
 
 USER = "io"
 
@@ -55,16 +59,29 @@ class ModbusIO(BusDevice, DigitalIO):
         s = self.settings
         count = s.input_count
 
-        def read(link: ModbusLink) -> list[bool]:
-            return link.read_discrete_inputs(s.device_id, s.inputs_address, count)
+        first, span = s.register_span
+
+        def read(link: ModbusLink) -> tuple[list[bool], list[int]]:
+            bits = link.read_discrete_inputs(s.device_id, s.inputs_address, count)
+            if not span:
+                return bits, []
+            words = link.read_registers(RegisterTable.INPUT, s.device_id, first, span)
+            return bits, words
 
         try:
-            bits = self._exchange(self.address, read, tolerate=tolerate)
+            bits, words = self._exchange(self.address, read, tolerate=tolerate)
         except TransientError:
             assert self._inputs is not None  # configure read the inputs once
             return self._inputs
-        values = {name: bits[bit] != (name in s.inverted) for name, bit in s.input_bits.items()}
-        self._inputs = InputImage(**values)
+        values: dict[str, bool | int] = {
+            name: bits[bit] != (name in s.inverted) for name, bit in s.input_bits.items()
+        }
+        for name, address in s.registers.items():
+            word = words[address - first]
+            # The counter is unsigned 16-bit; an analog input is signed (+-10 V: +-27648).
+            kind = DataType.UINT16 if name == "handwheel_count" else DataType.INT16
+            values[name] = int(decode([word], kind, WordOrder.BIG))
+        self._inputs = InputImage(**values)  # type: ignore[arg-type]
         return self._inputs
 
     def _write(self, outputs: OutputImage, *, tolerate: bool) -> None:

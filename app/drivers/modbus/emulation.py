@@ -23,10 +23,12 @@ from app.drivers.modbus.codec import decode, encode
 from app.drivers.modbus.settings import (
     OUTPUT_NAMES,
     CouplerSettings,
+    DataType,
     DriveSettings,
     Field,
     ModbusSettings,
     RegisterTable,
+    WordOrder,
     parse_modbus_settings,
 )
 from app.drivers.sim.drive import SimDrive
@@ -122,6 +124,18 @@ class CouplerBits:
             bit: bool(getattr(image, name)) != (name in s.inverted)
             for name, bit in s.input_bits.items()
         }
+
+    def input_registers(self) -> dict[int, int]:
+        """Input register address -> value: the handwheel's counter and the joystick's
+        analog inputs as the coupler's counter and analog modules show them."""
+        image = self.world.inputs()
+        found: dict[int, int] = {}
+        for name, address in self.settings.registers.items():
+            value = getattr(image, name)
+            if value is not None:
+                kind = DataType.UINT16 if name == "handwheel_count" else DataType.INT16
+                found[address] = encode(value, kind, WordOrder.BIG)[0]
+        return found
 
     def write_coils(self, address: int, values: list[bool]) -> None:
         s = self.settings

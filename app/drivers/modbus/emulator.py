@@ -46,6 +46,7 @@ READ_FUNCTIONS = {3: RegisterTable.HOLDING, 4: RegisterTable.INPUT}
 WRITE_REGISTER_FUNCTIONS = (6, 16, 23)
 WRITE_COIL_FUNCTIONS = (5, 15)
 READ_DISCRETE_INPUTS = 2
+READ_INPUT_REGISTERS = 4
 
 
 def _round16(count: int) -> int:
@@ -110,7 +111,11 @@ class ModbusEmulator:
                     datatype=DataType.BITS,
                 )
             ]
-            blocks = (coils, inputs, one_register, list(one_register))
+            first, span = c.register_span
+            input_registers = [
+                SimData(0, count=first + span or 1, values=0, datatype=DataType.REGISTERS)
+            ]
+            blocks = (coils, inputs, one_register, input_registers)
         else:
             drive = emulation.drives[name]
             registers = [
@@ -166,6 +171,11 @@ class ModbusEmulator:
                             )
                 elif function_code in WRITE_COIL_FUNCTIONS and set_values is not None:
                     coupler.write_coils(address, [bool(v) for v in set_values])
+                elif function_code == READ_INPUT_REGISTERS:
+                    for register, value in coupler.input_registers().items():
+                        index = register - start_address
+                        if 0 <= index < len(registers):
+                            registers[index] = value
                 return None
             drive = emulation.drives[name]
             table = READ_FUNCTIONS.get(function_code)

@@ -20,13 +20,13 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 from itertools import pairwise
 from typing import Any
 
 from app.config import ConfigError, MachineConfig, Section
 from app.drivers.cia402 import OperationMode
-from app.drivers.contracts import DIGITAL_INPUTS, OutputImage
+from app.drivers.contracts import ANALOG_INPUTS, DIGITAL_INPUTS, OutputImage
 
 MAX_READ_REGISTERS = 125  # Modbus limit of one read holding/input registers request
 MAX_WRITE_REGISTERS = 123  # Modbus limit of one write multiple registers request
@@ -200,10 +200,21 @@ class CouplerSettings:
     input_bits: Mapping[str, int]  # InputImage field -> bit offset; unwired inputs absent
     output_bits: Mapping[str, int]  # OutputImage field -> bit offset
     inverted: frozenset[str]  # inputs wired as normally-closed contacts
+    # ANALOG_INPUTS name -> input register (function 4): the handwheel's 16-bit counter
+    # (unsigned), the joystick's analog inputs (signed 16-bit); unwired ones absent
+    registers: Mapping[str, int] = field(default_factory=dict)
 
     @property
     def input_count(self) -> int:
         return max(self.input_bits.values()) + 1
+
+    @property
+    def register_span(self) -> tuple[int, int]:
+        """(first address, count) of the one input-register read per period; (0, 0): none."""
+        if not self.registers:
+            return 0, 0
+        first = min(self.registers.values())
+        return first, max(self.registers.values()) - first + 1
 
     @property
     def output_count(self) -> int:
@@ -540,6 +551,30 @@ def _bit_table(s: Section, names: tuple[str, ...], defaults: Mapping[str, int]) 
     return bits
 
 
+MAX_REGISTER_SPAN = 125  # the most registers one Modbus read returns
+
+
+def _register_table(s: Section) -> dict[str, int]:
+    """``[backend.modbus.io.registers]``: an input register per analog input, -1 (the
+    default) when not wired; all within one read."""
+    registers: dict[str, int] = {}
+    for name in ANALOG_INPUTS:
+        address = s.integer(name, -1, -1, _ADDRESS_MAX)
+        if address < 0:
+            continue
+        if address in registers.values():
+            other = next(n for n, a in registers.items() if a == address)
+            raise s.error(name, address, f"a register not already used by {other}")
+        registers[name] = address
+        span = max(registers.values()) - min(registers.values()) + 1
+        if span > MAX_REGISTER_SPAN:
+            raise s.error(
+                name, address, f"within {MAX_REGISTER_SPAN} registers of the others (one read)"
+            )
+    s.finish()
+    return registers
+
+
 def _parse_coupler(root: Section, link: LinkSettings, source: str) -> CouplerSettings:
     path = "backend.modbus.io"
     s, raw = _sub(root, "io", path, source, exclude=("inverted",))
@@ -555,6 +590,7 @@ def _parse_coupler(root: Section, link: LinkSettings, source: str) -> CouplerSet
                 name, -1, "a bit from 0: the safety chain's state must be read from a wire"
             )
     output_bits = _bit_table(s.table("outputs"), OUTPUT_NAMES, DEFAULT_OUTPUT_BITS)
+    registers = _register_table(s.table("registers"))
     s.finish()
     inverted_raw = raw.get("inverted", [])
     allowed = "a list of input names from: " + ", ".join(INPUT_NAMES)
@@ -585,6 +621,7 @@ def _parse_coupler(root: Section, link: LinkSettings, source: str) -> CouplerSet
         input_bits,
         output_bits,
         frozenset(inverted_raw),
+        registers,
     )
 
 

@@ -71,10 +71,15 @@ def machine_data(channel: str, **overrides: Any) -> dict[str, Any]:
     }
 
 
-def world_bus(world: SimWorld, channel: str) -> WorldBus:
+def world_bus(
+    world: SimWorld,
+    channel: str,
+    input_bits: Mapping[str, int] = INPUT_BITS,
+    analog: Mapping[str, int] | None = None,
+) -> WorldBus:
     """The world's drives and I/O as CANopen nodes on ``channel``, wired as
-    :func:`machine_data` configures the backend."""
-    return WorldBus(world, channel, NODE_IDS, COUNTS, IO_NODE, INPUT_BITS, OUTPUT_BITS)
+    :func:`machine_data` configures the backend (or as ``input_bits`` and ``analog`` say)."""
+    return WorldBus(world, channel, NODE_IDS, COUNTS, IO_NODE, input_bits, OUTPUT_BITS, analog)
 
 
 @dataclass

@@ -47,6 +47,7 @@ class WorldBus:
         io_node: int,
         input_bits: Mapping[str, int],
         output_bits: Mapping[str, int],
+        analog: Mapping[str, int] | None = None,
     ) -> None:
         self.world = world
         self.lock = threading.RLock()
@@ -56,7 +57,7 @@ class WorldBus:
             for name, node in node_ids.items()
         }
         self.clock = self.drives[next(iter(node_ids))]
-        self.io = WorldIo(self, io_node, input_bits, output_bits)
+        self.io = WorldIo(self, io_node, input_bits, output_bits, analog or {})
         for node in self.network.nodes:
             node.boot()
 
@@ -173,10 +174,12 @@ class WorldIo(SimIoNode):
         node_id: int,
         input_bits: Mapping[str, int],
         output_bits: Mapping[str, int],
+        analog: Mapping[str, int],
     ) -> None:
         self.bus = bus
         self.input_bits = dict(input_bits)
         self.output_bits = dict(output_bits)
+        self.analog = {sub: name for name, sub in analog.items()}  # 0x6401 sub -> input
         super().__init__(bus.network, node_id)
 
     def _on_sync(self, can_id: int, data: bytearray, timestamp: float) -> None:
@@ -186,6 +189,9 @@ class WorldIo(SimIoNode):
             super()._on_sync(can_id, data, timestamp)
 
     def on_read(self, index: int, subindex: int) -> int | None:
+        if index == obj.READ_ANALOG_INPUT_16BIT and subindex in self.analog:
+            value = getattr(self.bus.world.inputs(), self.analog[subindex]) or 0
+            return value - 0x10000 if value >= 0x8000 else value  # INTEGER16 on the wire
         if index == obj.READ_INPUT_8BIT and subindex >= 1:
             image = self.bus.world.inputs()
             self.inputs = sum(
