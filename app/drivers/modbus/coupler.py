@@ -24,9 +24,9 @@ from app.drivers.contracts import (
     OutputImage,
 )
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
+from app.drivers.modbus.codec import decode
 from app.drivers.modbus.device import BusDevice
 from app.drivers.modbus.link import ModbusLink
-from app.drivers.modbus.codec import decode
 from app.drivers.modbus.settings import CouplerSettings, DataType, RegisterTable, WordOrder
 
 USER = "io"
