@@ -70,6 +70,11 @@ class JogContinuous:
 
     axis: str
     direction: int  # -1 or +1
+    hold: int = 0
+    """Which hold of the button this is: the screen numbers each press and repeats the number
+    in its refreshes. Once the dead-man has stopped a hold, its refreshes are refused: the
+    overdue refresh of a screen that was frozen must not start the axis again (0: a sender
+    that does not number its holds)."""
 
 
 @dataclass(frozen=True)
@@ -85,16 +90,6 @@ class JogRelease:
     """The jog button was released: decelerate to standstill now."""
 
     axis: str = ""
-
-
-@dataclass(frozen=True)
-class SetJogSpeed:
-    """Jog speed and acceleration of manual mode, for X-Y (group "XY") or Z (group "Z");
-    they do not change the automatic ones."""
-
-    group: str
-    velocity: float
-    acceleration: float
 
 
 @dataclass(frozen=True)
@@ -229,7 +224,6 @@ Command = (
     | JogContinuous
     | JogStep
     | JogRelease
-    | SetJogSpeed
     | SetClamps
     | SetSpindle
     | SetFeedOverride

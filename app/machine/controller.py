@@ -40,10 +40,10 @@ from app.machine.homing_clearance import homing_clearance
 from app.machine.io_table import io_table
 from app.machine.pendant.jog_sources import PendantJog
 from app.machine.pendant.reading import PendantDevice
-from app.machine.permissions import may
+from app.machine.permissions import may, may_start_spindle
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.preview import PlanPublisher
-from app.machine.process_params import motion_limits, stave_limits
+from app.machine.process_params import jog_speeds, motion_limits, stave_limits
 from app.machine.recipe_on_machine import restore
 from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.sim_tools import SimulationTools
@@ -85,6 +85,7 @@ class MachineController(CycleControl):
         self._previous_inputs = InputImage()
         self._last_stop_s = -1e9
         self._seq = 0
+        self.manual.set_speeds(jog_speeds(config, self.params))
         restored = restore(store)
         self.recipe, self.message = restored.recipe, restored.message
         self._restore_barrel()  # an open barrel brings its own recipe
@@ -142,20 +143,21 @@ class MachineController(CycleControl):
                 self.mode = Mode.AUTOMATIC
                 self.outputs = replace(self.outputs, spindle_on=False)
                 self._transition(Event.LEAVE_MANUAL)
-            case cmd.JogContinuous(axis=axis, direction=direction):
+            case cmd.JogContinuous(axis=axis, direction=direction, hold=hold):
                 if not self._refuse_busy_jog():
-                    self._refuse(self.manual.press(axis, direction, self.now_s, self.axes))
+                    self._refuse(self.manual.press(axis, direction, self.now_s, self.axes, hold))
             case cmd.JogStep(axis=axis, step=step):
                 if not self._refuse_busy_jog():
                     self._refuse(self.manual.step(axis, step, self.axes))
             case cmd.JogRelease(axis=axis):
                 self.manual.release(axis)
-            case cmd.SetJogSpeed(group=group, velocity=velocity, acceleration=acceleration):
-                self._refuse(self.manual.set_speed(group, velocity, acceleration))
             case cmd.SetClamps(closed=closed):
                 self.outputs = replace(self.outputs, clamps_close=closed)
             case cmd.SetSpindle(on=on):
-                self.outputs = replace(self.outputs, spindle_on=on)
+                if on and (loose := may_start_spindle(self.facts())):
+                    self._refuse(loose)
+                else:
+                    self.outputs = replace(self.outputs, spindle_on=on)
             case cmd.SetFeedOverride(percent=percent):
                 self._set_feed_override(percent)
             case cmd.Acknowledge(alarm_id=alarm_id):
@@ -272,6 +274,7 @@ class MachineController(CycleControl):
 
     def _reload_parameters(self) -> None:
         self.params = self.store.parameters()
+        self.manual.set_speeds(jog_speeds(self.config, self.params))
         # The recipe stays the version selected: a saved recipe reaches the machine only when
         # someone selects it again (the Recipes screen asks).
         if self.cycle is None:

@@ -5,7 +5,8 @@ release is lost (a glove slides off the panel, the link hiccups, the GUI freezes
 arrives and the axis stops after JOG_DEADMAN_S on its own (the single most requested jog
 behaviour in the CNC HMI issue trackers).
 
-Jog speed and acceleration are manual mode's own, set for X-Y together and for Z, and never
+Jog speed and acceleration are manual mode's own, set for X-Y together and for Z by the
+System screen's Jogging parameters (the Manual screen edits the same parameters), and never
 change the automatic ones. The motion itself (jerk-limited, soft limits, back out of a limit
 only in the safe direction) is the planner's :class:`~app.machine.planner.jog.Jogger`.
 """
@@ -36,25 +37,20 @@ class ManualControl:
             "Z": (configs["Z"].jog_velocity, configs["Z"].jog_acceleration),
         }
         self._last_refresh_s: dict[str, float] = {}
+        self._holds: dict[str, int] = {}  # the hold each continuous jog belongs to
+        self._ended_holds: dict[str, int] = {}  # the last hold the dead-man ended, per axis
 
     def speed(self, group: str) -> tuple[float, float]:
         return self._speeds[group]
 
-    def set_speed(self, group: str, velocity: float, acceleration: float) -> Refusal | None:
-        if group not in GROUPS:
-            return refusal(Reason.JOG_GROUP_UNKNOWN, repr(group))
-        for name in GROUPS[group]:
-            cfg = self._configs[name]
-            if not 0 < velocity <= cfg.max_velocity:
-                return refusal(Reason.JOG_SPEED_RANGE, velocity, cfg.unit, cfg.max_velocity)
-            if not 0 < acceleration <= cfg.max_acceleration:
-                return refusal(
-                    Reason.JOG_ACCELERATION_RANGE, acceleration, cfg.unit, cfg.max_acceleration
-                )
-        self._speeds[group] = (velocity, acceleration)
-        for name in GROUPS[group]:
-            self._joggers[name].set_limits(velocity, acceleration)
-        return None
+    def set_speeds(self, speeds: Mapping[str, tuple[float, float]]) -> None:
+        """Jog speed and acceleration per group ("XY", "Z"), from the Jogging parameters
+        (see :func:`app.machine.process_params.jog_speeds`, which keeps them within what the
+        axes allow)."""
+        for group, (velocity, acceleration) in speeds.items():
+            self._speeds[group] = (velocity, acceleration)
+            for name in GROUPS[group]:
+                self._joggers[name].set_limits(velocity, acceleration)
 
     def _reset(self, name: str, position: float) -> None:
         """The jogger of ``name`` takes over the measured position, abandoning any motion
@@ -92,7 +88,13 @@ class ManualControl:
             return refusal(Reason.LIMIT_SWITCH_NEGATIVE, axis)
         return None
 
-    def press(self, axis: str, direction: int, now_s: float, axes: AxisGroup) -> Refusal | None:
+    def press(
+        self, axis: str, direction: int, now_s: float, axes: AxisGroup, hold: int = 0
+    ) -> Refusal | None:
+        if axis in self._ended_holds and hold and self._ended_holds[axis] == hold:
+            # A refresh of a hold the dead-man ended (a frozen screen catching up): only a
+            # new press starts the axis again.
+            return refusal(Reason.JOG_HOLD_ENDED, axis, JOG_DEADMAN_S)
         if reason := self._check_axis(axis, axes):
             return reason
         if direction not in (-1, 1):
@@ -100,6 +102,7 @@ class ManualControl:
         if reason := self._toward_active_switch(axis, direction, axes):
             return reason
         self._last_refresh_s[axis] = now_s
+        self._holds[axis] = hold
         return self._joggers[axis].press(direction).reason
 
     def step(self, axis: str, distance: float, axes: AxisGroup) -> Refusal | None:
@@ -186,6 +189,7 @@ class ManualControl:
             if now_s - last_s > JOG_DEADMAN_S:
                 self._joggers[name].release()
                 del self._last_refresh_s[name]
+                self._ended_holds[name] = self._holds.pop(name, 0)
                 expired = name
         enabled = axes.all_enabled()
         for name, jogger in self._joggers.items():

@@ -163,6 +163,20 @@ def may_spindle(f: Facts) -> Verdict:
     return None if f.inputs.guard_closed else _no(R.CLOSE_GUARD_FIRST)
 
 
+def may_start_spindle(f: Facts) -> Verdict:
+    """Spindle on by hand (Spindle off only needs ``may_spindle``): a board on the table must
+    be clamped, or the cutter may catch and throw it."""
+    if reason := may_spindle(f):
+        return reason
+    if f.inputs.part_present and not f.inputs.clamps_closed:
+        return _no(R.SPINDLE_LOOSE_BOARD)
+    return None
+
+
+SPINDLE_ON = "SpindleOn"
+"""The name of Spindle on's own rule in ``allowed_commands`` (a SetSpindle(True) command)."""
+
+
 def may_select_recipe(f: Facts) -> Verdict:
     if f.cycle_running or f.state in (MachineState.AUTOMATIC, MachineState.STOPPING):
         return _no(R.WAIT_FOR_CYCLE_END)
@@ -199,7 +213,6 @@ RULES: dict[type[cmd.Command], Rule] = {
     cmd.JogContinuous: may_jog,
     cmd.JogStep: may_jog,
     cmd.JogRelease: always,
-    cmd.SetJogSpeed: always,
     cmd.SetClamps: may_jog,
     cmd.SetSpindle: may_spindle,
     cmd.SelectRecipe: may_select_recipe,
@@ -237,4 +250,6 @@ def may(command: cmd.Command, facts: Facts) -> Verdict:
 
 def allowed_commands(facts: Facts) -> dict[str, Verdict]:
     """Command name -> None if allowed now, or why not (what the screens enable buttons by)."""
-    return {command_name(kind): rule(facts) for kind, rule in RULES.items()}
+    allowed = {command_name(kind): rule(facts) for kind, rule in RULES.items()}
+    allowed[SPINDLE_ON] = may_start_spindle(facts)
+    return allowed

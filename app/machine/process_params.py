@@ -59,3 +59,25 @@ def motion_limits(config: MachineConfig, params: Mapping[str, float]) -> MotionL
         z=axis("Z", "z_speed_deg_s", "z_accel_deg_s2", "z_jerk_deg_s3"),
         feed_mm_s=params.get("xy_speed_mm_s", config.process.feed_mm_s),
     )
+
+
+def jog_speeds(
+    config: MachineConfig, params: Mapping[str, float]
+) -> dict[str, tuple[float, float]]:
+    """Manual jog speed and acceleration per group ("XY", "Z") from the Jogging parameters,
+    never above what every axis of the group allows (the configuration's jog values stand in
+    for a parameter the database does not have)."""
+
+    def group(axes: tuple[str, ...], speed_key: str, accel_key: str) -> tuple[float, float]:
+        first = config.axes[axes[0]]
+        speed = params.get(speed_key, first.jog_velocity)
+        accel = params.get(accel_key, first.jog_acceleration)
+        return (
+            min(speed, *(config.axes[a].max_velocity for a in axes)),
+            min(accel, *(config.axes[a].max_acceleration for a in axes)),
+        )
+
+    return {
+        "XY": group(("X", "Y"), "jog_xy_speed_mm_s", "jog_xy_accel_mm_s2"),
+        "Z": group(("Z",), "jog_z_speed_deg_s", "jog_z_accel_deg_s2"),
+    }

@@ -49,6 +49,9 @@ class Reason(enum.Enum):
     )
     SELECT_RECIPE_FIRST = "select a recipe first"
     CLOSE_GUARD_FIRST = "close the guard first"
+    SPINDLE_LOOSE_BOARD = (
+        "a board is on the table and not clamped: clamp it or take it off before the spindle starts"
+    )
     NOTHING_MOVING = "nothing is moving"
     NOTHING_TO_RESET = "nothing to reset"
     RELEASE_ESTOP_FIRST = "release the emergency stop first"
@@ -82,15 +85,16 @@ class Reason(enum.Enum):
     DRIVE_STILL_FAULTED = "%1 still in fault %2"
     ESTOP_STILL_PRESSED = "emergency stop still pressed"
     COMMS_NOT_RESTORED = "communication not restored"
-    JOG_GROUP_UNKNOWN = "jog group %1 is not allowed: XY or Z"
-    JOG_SPEED_RANGE = "jog speed %1 %2/s is not allowed: above 0 and at most %3"
-    JOG_ACCELERATION_RANGE = "jog acceleration %1 %2/s² is not allowed: above 0 and at most %3"
     AXIS_UNKNOWN = "axis %1 is not allowed: X, Y or Z"
     JOG_DIRECTION_INVALID = "jog direction %1 is not allowed: -1 or 1"
     LIMIT_SWITCH_POSITIVE = "%1+ limit switch is active: jog %1 in the - direction only"
     LIMIT_SWITCH_NEGATIVE = "%1- limit switch is active: jog %1 in the + direction only"
     STEP_OF_ZERO = "a step of 0 moves nothing"
     RELEASE_JOG_FIRST = "axis %1 is moving: release the jog first"
+    JOG_HOLD_ENDED = (
+        "jog %1 was stopped: no refresh from the screen for %2 s; release the button and "
+        "press it again"
+    )
     AT_SOFT_LIMIT = "axis %1 is at its soft limit"
     AT_SOFT_LIMIT_VALUE = "axis %1 is at its soft limit %2 = %3"
     BEYOND_SOFT_LIMIT = (

@@ -10,6 +10,9 @@ lost link) the machine's dead-man timer stops the axis by itself.
 
 from __future__ import annotations
 
+import itertools
+import random
+
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QButtonGroup,
@@ -22,6 +25,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.data.errors import DataError
 from app.data.parameters import parameter_spec
 from app.machine.commands import (
     EnterManual,
@@ -30,15 +34,17 @@ from app.machine.commands import (
     JogRelease,
     JogStep,
     LeaveManual,
+    ReloadParameters,
     SetClamps,
-    SetJogSpeed,
     SetSpindle,
 )
+from app.machine.permissions import SPINDLE_ON
 from app.machine.snapshot import MachineSnapshot
 from app.machine.states import MachineState
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number
 from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.dialogs import ConfirmOverlay
 from app.screens.widgets.hold_button import HoldButton
 from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.readouts import AxisReadout, set_text, styled_label
@@ -78,6 +84,11 @@ class ManualScreen(Screen):
         self.step_mode = False
         self.step_size = 1.0
         self.jog_buttons: dict[tuple[str, int], HoldButton] = {}
+        # Each press is a new hold; its refreshes repeat its number (the machine refuses the
+        # refreshes of a hold its dead-man ended). Numbered from a random start so that a
+        # restarted screen does not repeat the numbers of the one before.
+        self._hold_numbers = itertools.count(random.randrange(1, 2**31))
+        self._holds: dict[str, int] = {}
 
         # -- jog cross ---------------------------------------------------------------------
         jog_panel = QFrame()
@@ -268,11 +279,12 @@ class ManualScreen(Screen):
             size = tilt_step_deg(self.step_size) if axis == "Z" else self.step_size
             self.context.send(JogStep(axis, direction * size))
         else:
-            self.context.send(JogContinuous(axis, direction))
+            self._holds[axis] = next(self._hold_numbers)
+            self.context.send(JogContinuous(axis, direction, self._holds[axis]))
 
     def jog_refresh(self, axis: str, direction: int) -> None:
         if not self.step_mode:
-            self.context.send(JogContinuous(axis, direction))
+            self.context.send(JogContinuous(axis, direction, self._holds.get(axis, 0)))
 
     def jog_released(self, axis: str) -> None:
         if not self.step_mode:
@@ -289,12 +301,17 @@ class ManualScreen(Screen):
         keypad = NumberKeypad(title, current, spec.minimum, spec.maximum, spec.unit, decimals=2)
 
         def accepted(value: float) -> None:
-            new_speed, new_accel = self._jog_values(group)
-            if column == 0:
-                new_speed = value
-            else:
-                new_accel = value
-            self.context.send(SetJogSpeed(group, new_speed, new_accel))
+            # The System screen's Jogging parameter: one value, logged, kept across a restart.
+            user = self.context.session.acting_user()
+            if user is None:
+                self.context.notify(self.tr("Log in to change parameters."))
+                return
+            try:
+                self.context.database.set_parameter(spec.name, value, user)
+            except DataError as exc:
+                self.context.notify(str(exc))
+                return
+            self.context.send(ReloadParameters())
 
         keypad.valueAccepted.connect(accepted)
         self.context.open(keypad)
@@ -309,8 +326,21 @@ class ManualScreen(Screen):
             self.context.send(SetClamps(not self.snapshot.outputs.clamps_close))
 
     def toggle_spindle(self) -> None:
-        if self.snapshot is not None:
-            self.context.send(SetSpindle(not self.snapshot.outputs.spindle_on))
+        """Spindle off at once; Spindle on only after the operator confirms (a cutter that
+        starts turning by hand is the one moment nobody expects it)."""
+        if self.snapshot is None:
+            return
+        if self.snapshot.outputs.spindle_on:
+            self.context.send(SetSpindle(False))
+            return
+        overlay = ConfirmOverlay(
+            self.tr("Start the spindle?"),
+            self.tr("The cutter starts turning. Keep clear of it."),
+            self.tr("Spindle ON"),
+            danger=True,
+        )
+        overlay.finished.connect(lambda ok: self.context.send(SetSpindle(True)) if ok else None)
+        self.context.open(overlay)
 
     # -- machine --------------------------------------------------------------------------------
 
@@ -357,7 +387,7 @@ class ManualScreen(Screen):
         self.clamps_button.setToolTip(clamps_reason)
         closed = snapshot.outputs.clamps_close
         set_text(self.clamps_button, self.tr("Open clamps") if closed else self.tr("Close clamps"))
-        spindle_reason = refusal(snapshot, "SetSpindle")
+        spindle_reason = refusal(snapshot, SPINDLE_ON)
         spindle_on = snapshot.outputs.spindle_on
         # Switching the spindle off is always offered while it runs.
         self.spindle_button.setEnabled(spindle_on or not spindle_reason)

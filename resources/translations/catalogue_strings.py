@@ -12,6 +12,10 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "USB pendant ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP(
         "MachineText",
+        "a board is on the table and not clamped: clamp it or take it off before the spindle starts",
+    ),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
         "a board is on the table and the axes do not know where they are: take the board off before homing",
     ),
     QT_TRANSLATE_NOOP("MachineText", "a board is on the table: moving clear of it before homing"),
@@ -49,11 +53,10 @@ TEXTS = [
     ),
     QT_TRANSLATE_NOOP("MachineText", "homing refused: %1"),
     QT_TRANSLATE_NOOP(
-        "MachineText", "jog acceleration %1 %2/s² is not allowed: above 0 and at most %3"
+        "MachineText",
+        "jog %1 was stopped: no refresh from the screen for %2 s; release the button and press it again",
     ),
     QT_TRANSLATE_NOOP("MachineText", "jog direction %1 is not allowed: -1 or 1"),
-    QT_TRANSLATE_NOOP("MachineText", "jog group %1 is not allowed: XY or Z"),
-    QT_TRANSLATE_NOOP("MachineText", "jog speed %1 %2/s is not allowed: above 0 and at most %3"),
     QT_TRANSLATE_NOOP(
         "MachineText",
         "joystick %1 reads %2 counts off its centre at start-up: let it go, it is calibrated once at rest",

@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+119" />
+        <location filename="catalogue_strings.py" line="+122" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -677,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-142" />
+        <location filename="catalogue_strings.py" line="-145" />
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -713,6 +713,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>a board is on the table and not clamped: clamp it or take it off before the spindle starts</source>
+        <translation>a board is on the table and not clamped: clamp it or take it off before the spindle starts</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>a board is on the table and the axes do not know where they are: take the board off before homing</source>
         <translation>a board is on the table and the axes do not know where they are: take the board off before homing</translation>
     </message>
@@ -838,23 +843,13 @@
     </message>
     <message>
         <location line="+1" />
-        <source>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</source>
-        <translation>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</translation>
+        <source>jog %1 was stopped: no refresh from the screen for %2 s; release the button and press it again</source>
+        <translation>jog %1 was stopped: no refresh from the screen for %2 s; release the button and press it again</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>jog direction %1 is not allowed: -1 or 1</source>
         <translation>jog direction %1 is not allowed: -1 or 1</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>jog group %1 is not allowed: XY or Z</source>
-        <translation>jog group %1 is not allowed: XY or Z</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
-        <translation>jog speed %1 %2/s is not allowed: above 0 and at most %3</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1380,7 +1375,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+215" />
+        <location filename="../../app/screens/manual_screen.py" line="+226" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -1455,7 +1450,7 @@ shift</translation>
         <translation>Waiting for the machine…</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+53" />
         <source>Jog speed %1</source>
         <translation>Jog speed %1</translation>
     </message>
@@ -1465,7 +1460,22 @@ shift</translation>
         <translation>Jog acceleration %1</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+8" />
+        <source>Log in to change parameters.</source>
+        <translation>Log in to change parameters.</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>Start the spindle?</source>
+        <translation>Start the spindle?</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The cutter starts turning. Keep clear of it.</source>
+        <translation>The cutter starts turning. Keep clear of it.</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>Manual mode: hold a button to jog.</source>
         <translation>Manual mode: hold a button to jog.</translation>
     </message>
@@ -1490,7 +1500,8 @@ shift</translation>
         <translation>Spindle OFF</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-57" />
+        <location line="+57" />
         <source>Spindle ON</source>
         <translation>Spindle ON</translation>
     </message>

@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+119"/>
+        <location filename="catalogue_strings.py" line="+122"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -677,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-142"/>
+        <location filename="catalogue_strings.py" line="-145"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -713,6 +713,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>a board is on the table and not clamped: clamp it or take it off before the spindle starts</source>
+        <translation>na mizi je deska, ki ni vpeta: vpnite jo ali jo odstranite, preden se vreteno zažene</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>a board is on the table and the axes do not know where they are: take the board off before homing</source>
         <translation>na mizi je deska, osi pa ne vedo, kje so: pred referenciranjem odstranite desko</translation>
     </message>
@@ -838,23 +843,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>jog acceleration %1 %2/s² is not allowed: above 0 and at most %3</source>
-        <translation>pospešek ročnega premika %1 %2/s² ni dovoljen: nad 0 in največ %3</translation>
+        <source>jog %1 was stopped: no refresh from the screen for %2 s; release the button and press it again</source>
+        <translation>ročni premik %1 je bil ustavljen: zaslon %2 s ni osvežil ukaza; spustite tipko in jo pritisnite znova</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>jog direction %1 is not allowed: -1 or 1</source>
         <translation>smer ročnega premika %1 ni dovoljena: -1 ali 1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>jog group %1 is not allowed: XY or Z</source>
-        <translation>skupina ročnega premika %1 ni dovoljena: XY ali Z</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>jog speed %1 %2/s is not allowed: above 0 and at most %3</source>
-        <translation>hitrost ročnega premika %1 %2/s ni dovoljena: nad 0 in največ %3</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1380,7 +1375,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+215"/>
+        <location filename="../../app/screens/manual_screen.py" line="+226"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -1455,7 +1450,7 @@ izmena</translation>
         <translation>Čakam na stroj…</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Jog speed %1</source>
         <translation>Hitrost ročnega premika %1</translation>
     </message>
@@ -1465,7 +1460,22 @@ izmena</translation>
         <translation>Pospešek ročnega premika %1</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+8"/>
+        <source>Log in to change parameters.</source>
+        <translation>Za spreminjanje parametrov se prijavite.</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Start the spindle?</source>
+        <translation>Zaženem vreteno?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The cutter starts turning. Keep clear of it.</source>
+        <translation>Rezilo se začne vrteti. Ne približujte se mu.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Manual mode: hold a button to jog.</source>
         <translation>Ročni način: za premik držite gumb.</translation>
     </message>
@@ -1490,7 +1500,8 @@ izmena</translation>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-57"/>
+        <location line="+57"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>

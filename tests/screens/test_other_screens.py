@@ -12,7 +12,7 @@ from app.data.database import Database
 from app.data.users import Role
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
-from app.screens.widgets.dialogs import ChoiceOverlay
+from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keypad import NumberKeypad, PinPad
 from tests.screens.helpers import enter_pin, find_button, wait_for
 
@@ -58,6 +58,20 @@ def test_hold_and_release_a_jog_button(qtbot, window, machine, tap) -> None:
     later = wait_for(qtbot, window, lambda s: s.machine_time_s > settled.machine_time_s + 0.5)
     assert later.axis("X").position == pytest.approx(x_stop, abs=0.01), "stopped on release"
     assert not any(a.code == "W101" for a in later.alarms)
+
+
+def test_spindle_on_by_hand_asks_first(qtbot, window, tap) -> None:
+    open_manual(qtbot, window, tap)
+    spindle = find_button(window, "spindleButton")
+    wait_for(qtbot, window, lambda s: not s.allowed.get("SpindleOn"))
+    tap(spindle)
+    question = window.overlay()
+    assert isinstance(question, ConfirmOverlay)
+    assert not window.poller.snapshot.outputs.spindle_on  # nothing turns before the answer
+    tap(question.confirm_button)
+    wait_for(qtbot, window, lambda s: s.outputs.spindle_on)
+    tap(spindle)  # off at once
+    wait_for(qtbot, window, lambda s: not s.outputs.spindle_on)
 
 
 def test_step_jog_moves_by_the_step(qtbot, window, tap) -> None:
