@@ -97,7 +97,8 @@ def test_a_fast_spin_stops_when_the_wheel_stops_within_the_jog_ramp(manual: Rig)
     rig.until(lambda c: not rig.world.handwheel.turning, 2.0)  # the hand has stopped
     assert x(rig) > x0
     x_cfg = rig.controller.config.axes["X"]
-    ramp_s = x_cfg.jog_velocity / x_cfg.jog_acceleration + x_cfg.jog_acceleration / x_cfg.max_jerk
+    jog_v, jog_a = rig.controller.manual.speed("XY")  # the Jogging parameters
+    ramp_s = jog_v / jog_a + jog_a / x_cfg.max_jerk
     rig.run(ramp_s + 0.02)
     assert rig.controller.manual.at_rest
     stopped = x(rig)
@@ -112,14 +113,15 @@ def test_the_wheel_stops_at_the_soft_limit_and_turns_back_at_once(manual: Rig) -
     rig.send(cmd.HoldJogEnable(True))
     z_max = rig.controller.config.axes["Z"].max_position
     z0 = rig.controller.manual.position("Z")
-    beyond = round((z_max - z0) * 10) + 20  # 2 deg past the limit, at 7 deg/s (jog: 7.5)
-    rig.send(cmd.TurnHandwheel(beyond, 70.0))
+    beyond = round((z_max - z0) * 10) + 20  # 2 deg past the limit, a little below jog speed
+    rig.send(cmd.TurnHandwheel(beyond, 9.0 * rig.controller.manual.speed("Z")[0]))
     rig.until(lambda c: not rig.world.handwheel.turning, 5.0)
     rig.run(0.3)
     assert rig.controller.manual.position("Z") == pytest.approx(z_max)
     message = rig.controller.message
     assert message is not None and "soft limit" in str(message)
-    rig.send(cmd.TurnHandwheel(-10, 50.0), run_s=0.8)  # back: 1 deg at once, no unwinding
+    back_rate = 5.0 * rig.controller.manual.speed("Z")[0]  # half the jog speed
+    rig.send(cmd.TurnHandwheel(-10, back_rate), run_s=1.5)  # back: 1 deg at once, no unwinding
     assert rig.controller.manual.position("Z") == pytest.approx(z_max - 1.0, abs=1e-6)
     rig.send(cmd.SelectHandwheel("", 1))
     rig.send(cmd.JogStep("Z", z0 - (z_max - 1.0)), run_s=1.0)  # the screen takes it back
@@ -157,9 +159,7 @@ def test_the_joystick_jogs_proportionally_and_stops_when_let_go(manual: Rig) -> 
     rig.send(cmd.PushJoystick(x=0.5), run_s=1.5)
     fraction = ((0.5 - settings.deadband) / (1 - settings.deadband)) ** settings.curve_exponent
     velocity = rig.controller.axes.feedback["X"].velocity
-    assert velocity == pytest.approx(
-        fraction * rig.controller.config.axes["X"].jog_velocity, rel=0.03
-    )
+    assert velocity == pytest.approx(fraction * rig.controller.manual.speed("XY")[0], rel=0.03)
     assert rig.controller.snapshot().pendant.jog_source is JogSource.JOYSTICK
     rig.send(cmd.PushJoystick(x=0.02), run_s=0.5)  # within the deadband: stops
     assert rig.controller.manual.at_rest
