@@ -11,6 +11,8 @@ connection (no restart). Trusting needs the service level and is logged with the
 from __future__ import annotations
 
 import logging
+import math
+import time
 from collections.abc import Callable
 
 from PySide6.QtCore import Qt
@@ -35,6 +37,7 @@ from app.screens.widgets.readouts import set_text, styled_label
 log = logging.getLogger(__name__)
 
 StatusSource = Callable[[], PlantStatus | None]
+REFRESH_S = 2.0
 
 
 class OpcuaPage(QFrame):
@@ -46,6 +49,7 @@ class OpcuaPage(QFrame):
         self.context = context
         self.status = status
         self.rejected: list[CertificateInfo] = []
+        self.refreshed_s = -math.inf  # monotonic time of the last refresh
         self.title = styled_label("", "title")
         self.state_label = styled_label("", "value", "opcuaState")
         self.state_label.setWordWrap(True)
@@ -136,7 +140,13 @@ class OpcuaPage(QFrame):
             lines.append(self.tr("Use these for commissioning only ([opcua] configuration)."))
         return "\n".join(lines)
 
+    def refresh_now_and_then(self) -> None:
+        """While the page is shown: the server's state and new refusals every few seconds."""
+        if time.monotonic() - self.refreshed_s >= REFRESH_S:
+            self.refresh()
+
     def refresh(self) -> None:
+        self.refreshed_s = time.monotonic()
         status = self.status()
         set_text(self.state_label, self.state_text(status))
         enabled = status is not None and status.settings.enabled
@@ -150,7 +160,10 @@ class OpcuaPage(QFrame):
         warning = self.warning_text(status)
         set_text(self.warning_label, warning)
         self.warning_label.setVisible(bool(warning))
-        self.rejected = TrustList(status.pki_dir).rejected() if status is not None else []
+        rejected = TrustList(status.pki_dir).rejected() if status is not None else []
+        if [c.thumbprint for c in rejected] == [c.thumbprint for c in self.rejected]:
+            return  # the same certificates: keep the table and the technician's selection
+        self.rejected = rejected
         self.table.setRowCount(len(self.rejected))
         for row, info in enumerate(self.rejected):
             cells = (
@@ -161,6 +174,7 @@ class OpcuaPage(QFrame):
             for column, text in enumerate(cells):
                 self.table.setItem(row, column, QTableWidgetItem(text))
         self.table.resizeRowsToContents()
+        self.table.clearSelection()
         self._selection_changed()
 
     def _selected(self) -> CertificateInfo | None:

@@ -426,6 +426,8 @@ class SystemScreen(Screen):
 
     def update_snapshot(self, snapshot: MachineSnapshot, force: bool = False) -> None:
         self.snapshot = snapshot
+        if self.pages.currentWidget() is self.opcua_page and self.opcua_page.isVisible():
+            self.opcua_page.refresh_now_and_then()
         simulation = not refusal(snapshot, "InjectFault")
         button = self.group_buttons["simulation"]
         if button.isHidden() == simulation:

@@ -54,6 +54,10 @@ def test_opcua_page_shows_the_server_and_trusts_a_refused_certificate(
     assert any(
         thumbprint in r.getMessage() and "by service" in r.getMessage() for r in caplog.records
     )
+    # A client refused while the page is shown appears by itself.
+    trust.note_rejected(client_certificate_der("SCADA", "urn:plant:scada"))
+    qtbot.waitUntil(lambda: page.table.rowCount() == 1, timeout=10_000)
+    assert page.table.item(0, 1).text() == "urn:plant:scada"
 
     # In Slovenian, and a server that did not start.
     failed = PlantStatus(settings, trust.pki_dir, False, ("OPC UA server did not start: x",))
