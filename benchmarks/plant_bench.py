@@ -203,7 +203,9 @@ def run_plant(machines: int, seconds: float) -> None:
         assert recipe is not None and recipe.id is not None
         for link in links:
             link.send(cmd.SelectRecipe(recipe.id))
-        end = time.monotonic() + seconds - 2.0
+        # Production stops 8 s before the client leaves: the last records reach the
+        # database and the servers in that time.
+        end = time.monotonic() + seconds - 8.0
         last = time.monotonic()
         while time.monotonic() < end:
             now = time.monotonic()

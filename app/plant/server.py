@@ -47,6 +47,8 @@ log = logging.getLogger(__name__)
 APPLICATION_URI = "urn:stave-jointer:opcua:server"
 _EVENT_CATEGORY = {"fault": 4, "warning": 3}  # WwEventCategoryEnumeration ALARM, WARNING
 _SEVERITY = {"fault": 800, "warning": 400}
+RECOUNT_S = 10.0  # how long after a change of the machine's count the records are counted
+RECOUNT_EVERY_S = 0.5
 _EVENT_FIELD_TYPES = {
     "MessageId": ua.VariantType.String,
     "MessageName": ua.VariantType.String,
@@ -103,6 +105,8 @@ class PlantServer:
         self._argument_type: type = object
         self._saved_at = clock()
         self._counted_total = -1
+        self._recount_until = -1.0
+        self._counted_at = -RECOUNT_EVERY_S
         self._start_counts: dict[str, int] | None = None
         self._events: Any = None
         self._source_time = datetime.now(UTC)
@@ -344,8 +348,16 @@ class PlantServer:
             await self._write_own("LastR_mm", snapshot.cycle.r_mm, ua.VariantType.Double)
         await self._write_own("PiecesThisShift", snapshot.pieces_shift, ua.VariantType.UInt64)
         await self._publish_barrel(snapshot.barrel)
+        # The record of a board reaches the database a moment after the machine counts it
+        # (its store writes in the background, later still when the database is busy): the
+        # counters are read again for a while after each change of the machine's count.
+        now = self._clock()
         if snapshot.pieces_total != self._counted_total:
             self._counted_total = snapshot.pieces_total
+            self._recount_until = now + RECOUNT_S
+            self._counted_at = -RECOUNT_EVERY_S
+        if now <= self._recount_until and now - self._counted_at >= RECOUNT_EVERY_S:
+            self._counted_at = now
             await self._publish_counts()
 
     async def _publish_barrel(self, barrel: BarrelView | None) -> None:
