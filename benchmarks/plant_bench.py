@@ -263,7 +263,8 @@ def run_plant(machines: int, seconds: float) -> None:
         final = max(pieces) if pieces else 0
         missed_pieces += counts[index] - int(final)
     print(
-        f"{machines} machines, {seconds:.0f} s, {sum(counts)} staves cut, "
+        f"{machines} machines, {seconds:.0f} s, {sum(counts)} staves cut "
+        f"({min(counts)} to {max(counts)} per machine), "
         f"{len(received)} notifications to one client"
     )
     print(
