@@ -24,11 +24,12 @@ from app.data.backup import (
     BackupError,
     backup_database,
     checksum_path,
-    file_sha256,
     restore_database,
     service_pin_check,
 )
 from app.data.database import Database
+
+from .test_backup import live_bytes, sign
 
 FUZZ = settings(
     max_examples=25,
@@ -64,30 +65,17 @@ def workshop(tmp_path_factory: pytest.TempPathFactory, template_db: Path) -> Ite
     yield Workshop(tmp_path_factory.mktemp("backup-fuzz"), template_db)
 
 
-def digest(path: Path) -> str:
-    """The live database's file and its WAL: what a refused restore must not change."""
-    sha = hashlib.sha256()
-    for part in (path, Path(f"{path}-wal")):
-        if part.exists():
-            sha.update(part.read_bytes())
-    return sha.hexdigest()
-
-
-def sign(path: Path) -> None:
-    checksum_path(path).write_text(f"{file_sha256(path)}  {path.name}\n")
-
-
 def restore_refused_or_healthy(live: Path, candidate: Path) -> bool:
     """Restore ``candidate`` into ``live``: True when it was refused (live untouched, one
     line naming the file), False when it was restored (the result healthy)."""
-    before = digest(live)
+    before = live_bytes(live)
     files_before = sorted(p.name for p in live.parent.iterdir())
     try:
         restore_database(candidate, live, authorize=SERVICE)
     except BackupError as exc:
         message = str(exc)
         assert "\n" not in message and candidate.name in message, message
-        assert digest(live) == before
+        assert live_bytes(live) == before
         assert sorted(p.name for p in live.parent.iterdir()) == files_before
         return True
     with closing(sqlite3.connect(live)) as conn:
