@@ -50,6 +50,7 @@ from app.plant.status import PlantStatus, PlantStatusSource
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_clock, format_number
 from app.screens.opcua_page import OpcuaPage
+from app.screens.pin_lockout import PinLockoutBar
 from app.screens.texts import parameter_text, role_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keypad import NumberKeypad
@@ -193,6 +194,8 @@ class SystemScreen(Screen):
         settings_layout = QVBoxLayout(settings)
         settings_layout.setContentsMargins(0, 0, 0, 0)
         settings_layout.setSpacing(8)
+        self.pin_lockout = PinLockoutBar(context)
+        settings_layout.addWidget(self.pin_lockout)
         settings_layout.addLayout(group_grid)
         settings_layout.addWidget(self.pages, 1)
 
@@ -235,6 +238,7 @@ class SystemScreen(Screen):
         )
         self.unlock_button.setText(self.tr("Unlock with PIN"))
         self.lock_button.setText(self.tr("Lock (log out)"))
+        self.pin_lockout.retranslate()
         for key, button in self.group_buttons.items():
             button.setText(self.group_title(key))
         self.log_title.setText(self.tr("Change log of the system parameters"))
@@ -274,6 +278,7 @@ class SystemScreen(Screen):
         self.unlocked = self.context.session.can(Role.TECHNICIAN)
         self.body.setCurrentWidget(self.settings_page if self.unlocked else self.locked_page)
         if self.unlocked:
+            self.pin_lockout.refresh()
             self.show_group(self.group)
 
     def activated(self) -> None:

@@ -1799,6 +1799,24 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>PinLockoutBar</name>
+    <message>
+        <location filename="../../app/screens/pin_lockout.py" line="+53" />
+        <source>Unlock PIN entry</source>
+        <translation>Unlock PIN entry</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>PIN entry is locked after repeated wrong PINs until %1. A service user can unlock it now.</source>
+        <translation>PIN entry is locked after repeated wrong PINs until %1. A service user can unlock it now.</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>PIN entry unlocked by %1 (logged).</source>
+        <translation>PIN entry unlocked by %1 (logged).</translation>
+    </message>
+</context>
+<context>
     <name>PinPad</name>
     <message>
         <location filename="../../app/screens/widgets/keypad.py" line="+221" />
@@ -2433,7 +2451,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+212" />
+        <location filename="../../app/screens/system_screen.py" line="+215" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -2489,12 +2507,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+26" />
+        <location line="+27" />
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-20" />
         <source>The system settings are locked.
 Log in as technician or service to change them.</source>
         <translation>The system settings are locked.
@@ -2511,7 +2529,7 @@ Log in as technician or service to change them.</translation>
         <translation>Lock (log out)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Change log of the system parameters</source>
         <translation>Change log of the system parameters</translation>
     </message>
@@ -2566,7 +2584,7 @@ Log in as technician or service to change them.</translation>
         <translation>Replace the board</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+64" />
         <source>needs %1</source>
         <translation>needs %1</translation>
     </message>

@@ -1799,6 +1799,24 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>PinLockoutBar</name>
+    <message>
+        <location filename="../../app/screens/pin_lockout.py" line="+53"/>
+        <source>Unlock PIN entry</source>
+        <translation>Odkleni vnos PIN</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PIN entry is locked after repeated wrong PINs until %1. A service user can unlock it now.</source>
+        <translation>Vnos PIN je zaklenjen po ponavljajočih se napačnih PIN-ih do %1. Serviser ga lahko odklene zdaj.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>PIN entry unlocked by %1 (logged).</source>
+        <translation>Vnos PIN je odklenil %1 (zabeleženo).</translation>
+    </message>
+</context>
+<context>
     <name>PinPad</name>
     <message>
         <location filename="../../app/screens/widgets/keypad.py" line="+221"/>
@@ -2433,7 +2451,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+212"/>
+        <location filename="../../app/screens/system_screen.py" line="+215"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -2489,12 +2507,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Simulation</source>
         <translation>Simulacija</translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-20"/>
         <source>The system settings are locked.
 Log in as technician or service to change them.</source>
         <translation>Sistemske nastavitve so zaklenjene.
@@ -2511,7 +2529,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <translation>Zakleni (odjava)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Change log of the system parameters</source>
         <translation>Dnevnik sprememb sistemskih parametrov</translation>
     </message>
@@ -2566,7 +2584,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <translation>Zamenjaj desko</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>needs %1</source>
         <translation>potrebna raven: %1</translation>
     </message>

@@ -3,12 +3,16 @@ System (PIN lock, a logged change) and the language switch, operated as a person
 
 from __future__ import annotations
 
+import sqlite3
+from contextlib import closing
 from datetime import UTC, datetime, timedelta
 
 import pytest
 from PySide6.QtCore import Qt
 
 from app.data.database import Database
+from app.data.records import AlarmState as AlarmRecordState
+from app.data.records import format_utc
 from app.data.users import Role
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
@@ -236,3 +240,25 @@ def test_the_pin_pad_is_locked_like_every_other_way_in(qtbot, window, database, 
     enter_pin(qtbot, window, tap, "1234")  # right, but PIN entry is locked
     assert pad.is_open and "locked" in pad.error_label.text()
     assert screen.body.currentWidget() is screen.locked_page
+
+
+def test_a_service_user_lifts_the_pin_lockout_on_the_system_screen(
+    qtbot, window, database, tap
+) -> None:
+    log_in(qtbot, window, tap, "9999")  # service, before the lockout
+    # Wrong PINs typed elsewhere locked PIN entry: the stored row as the guard leaves it (the
+    # way there, ten scrypt-checked attempts, is the previous test's and the data layer's).
+    until = format_utc(datetime.now(UTC) + timedelta(minutes=15))
+    with closing(sqlite3.connect(database.path)) as conn, conn:
+        conn.execute("UPDATE pin_guard SET failures = 10, locked_until = ?", (until,))
+    tap(find_button(window, "nav_system"))
+    screen = window.page("system")
+    bar = screen.pin_lockout
+    assert bar.isVisible() and "locked" in bar.text_label.text()
+    tap(find_button(window, "unlockPinEntry"))
+    assert database.pin_guard_state().locked_until is None
+    assert database.pin_guard_state().failures == 0
+    assert not bar.isVisible()
+    events = database.list_alarm_events()
+    [lifted] = [e for e in events if e.code == "W104" and e.to_state is AlarmRecordState.NORMAL]
+    assert lifted.user_name == "service"  # who lifted it, in the alarm history
