@@ -132,6 +132,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     from app.machine.link import MachineLink
     from app.machine.process_link import ProcessMachineLink
+    from app.machine.process_params import stave_limits
     from app.screens.application import run_gui
 
     link: MachineLink = ProcessMachineLink.start(config, db_path)
@@ -142,7 +143,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             log.warning("OPC UA: %s is on ([opcua] configuration): commissioning only", warning)
         link = PlantFeedLink(link, PlantProcess.start(config.opcua, db_path, config.log_dir))
     try:
-        with Database.open(db_path) as database:
+        # The machine's travel: what the screens check recipes against and show as enforced.
+        with Database.open(db_path, limits=stave_limits(config)) as database:
             _quit_on_sigterm()
             return run_gui(link, database, language=language, kiosk=args.kiosk)
     finally:
@@ -188,6 +190,7 @@ def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tupl
     from app.data.backup import backup_database
     from app.data.database import Database
     from app.machine.local_link import LocalMachineLink
+    from app.machine.process_params import stave_limits
     from app.screens.screenshots import render_screenshots
 
     with tempfile.TemporaryDirectory() as tmp:
@@ -196,7 +199,7 @@ def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tupl
             backup_database(db_path, shot_db)
         link = LocalMachineLink.create(config.with_backend("sim", "sim"), shot_db)
         try:
-            with Database.open(shot_db) as database:
+            with Database.open(shot_db, limits=stave_limits(config)) as database:
                 paths = render_screenshots(out_dir, size, link, database)
         finally:
             link.close()

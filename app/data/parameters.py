@@ -49,6 +49,16 @@ class ParameterSpec:
         )
 
 
+CONFIGURATION_GROUPS: frozenset[str] = frozenset({"limits"})
+"""Groups whose values the machine takes from its configuration (the axis travel it enforces,
+``[axes.*]`` in the machine's TOML file), not from these parameters: the System screen shows
+the configuration's values there, read-only. The stored parameters of these groups are kept
+for older databases and backups only."""
+
+UNUSED_PARAMETERS: frozenset[str] = frozenset({"solver_tolerance_mm"})
+"""Parameters the machine does not read (the stave solver decides its root exactly): kept in
+the catalogue for older databases and backups, not shown on the System screen."""
+
 _T = Role.TECHNICIAN
 _S = Role.SERVICE
 _O = Role.OPERATOR

@@ -19,6 +19,9 @@ from enum import IntEnum
 
 PIN_MIN_DIGITS = 4
 SIMULATION_ACTOR = "simulation"
+CONFIGURATION_ACTOR = "configuration"
+"""The name the parameter log gives the factory values a new database takes from the machine's
+configuration on the first start: nobody changed them, the service user least of all."""
 """The name the change logs give what the simulated machine changes (its factory parameters,
 the recipes ``stave simulate`` is given): on the service user's authority, but never confused
 with a service engineer's own change."""

@@ -86,6 +86,7 @@ class MachineController(CycleControl):
         self._last_stop_s = -1e9
         self._seq = 0
         self.manual.set_speeds(jog_speeds(config, self.params))
+        self.production.follow_shifts(self.params)
         restored = restore(store)
         self.recipe, self.message = restored.recipe, restored.message
         self._restore_barrel()  # an open barrel brings its own recipe
@@ -275,6 +276,7 @@ class MachineController(CycleControl):
     def _reload_parameters(self) -> None:
         self.params = self.store.parameters()
         self.manual.set_speeds(jog_speeds(self.config, self.params))
+        self.production.follow_shifts(self.params)
         # The recipe stays the version selected: a saved recipe reaches the machine only when
         # someone selects it again (the Recipes screen asks).
         if self.cycle is None:
@@ -289,6 +291,7 @@ class MachineController(CycleControl):
     # ---------------------------------------------------------------- the period
     def tick(self, now_s: float) -> None:
         self.now_s = now_s
+        self.production.tick(now_s)
         try:
             feedback, self.inputs, findings = self.devices.read()
         except DriverError as exc:

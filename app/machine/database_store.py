@@ -45,7 +45,7 @@ from app.data.pending import (
 from app.data.recipe import Recipe
 from app.data.records import AlarmEvent, PieceResult, ProductionRecord
 from app.data.records import AlarmState as StoredAlarmState
-from app.data.users import SIMULATION_ACTOR, Role, User
+from app.data.users import CONFIGURATION_ACTOR, SIMULATION_ACTOR, Role, User
 from app.machine.alarms import AlarmTransition
 from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.process_params import config_parameters, stave_limits
@@ -134,7 +134,8 @@ def apply_write(db: Database, write: PendingWrite, logged_as: str | None = None)
     elif isinstance(write, BarrelStaveWrite):
         db.record_barrel_stave(write.record)
     elif not db.parameter_history(limit=1):  # still untuned: nobody has changed anything since
-        db.set_parameters(write.values, _service_user(db), logged_as=logged_as)
+        seeded_as = logged_as or CONFIGURATION_ACTOR
+        db.set_parameters(write.values, _service_user(db), logged_as=seeded_as)
 
 
 class DurableWriter:

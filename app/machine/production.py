@@ -7,13 +7,25 @@ the finished cycle and writes to the store, and nothing in it decides what moves
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from datetime import datetime
 
+from app.data.shifts import ShiftPlan, current_shift
 from app.machine.cycle import AutomaticCycle
 from app.machine.states import CycleStep
 from app.machine.store import MachineStore, PieceRecord
 
 KEPT_CYCLES = 10  # the last cycles kept for `stave simulate` and the tests to inspect
+SHIFT_CHECK_S = 1.0  # how often (machine time) the counter looks whether a new shift began
+
+
+def shift_start_s(params: Mapping[str, float], now_s: float) -> float:
+    """The start (epoch seconds) of the shift of the plan (the ``production`` parameters)
+    running at ``now_s`` in the machine's local time, or of the last one begun if none runs."""
+    _number, start = current_shift(
+        datetime.fromtimestamp(now_s).astimezone(), ShiftPlan.from_parameters(params)
+    )
+    return start.timestamp()
 
 
 class Production:
@@ -25,8 +37,34 @@ class Production:
         self.last_width_mm: float | None = None
         self.last_cycle_time_s: float | None = None
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
+        self._shift_params: dict[str, float] | None = None  # None: counting since power-up
+
+    def follow_shifts(self, params: Mapping[str, float]) -> None:
+        """Count the pieces of the shift the plan says is running (those stored before a
+        restart too), and start again at each new shift's start."""
+        self._shift_params = dict(params)
+        self._plan_start_s: float | None = None
+        self._next_check_s = 0.0
+        self._check_shift(recount_total=True)
+
+    def tick(self, now_s: float) -> None:
+        if self._shift_params is not None and now_s >= self._next_check_s:
+            self._next_check_s = now_s + SHIFT_CHECK_S
+            self._check_shift(recount_total=False)
+
+    def _check_shift(self, *, recount_total: bool) -> None:
+        assert self._shift_params is not None
+        start = shift_start_s(self._shift_params, self._wall_clock())
+        if start == self._plan_start_s:
+            return
+        self._plan_start_s = self.shift_start = start
+        shift, total = self._store.piece_counts(start)
+        self.pieces_shift = shift
+        if recount_total:
+            self.pieces_total = total
 
     def reset_shift(self) -> None:
+        """The operator's New shift: counts from now until the plan's next shift begins."""
         self.shift_start = self._wall_clock()
         self.pieces_shift = 0
 

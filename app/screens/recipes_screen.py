@@ -16,7 +16,7 @@ from datetime import datetime
 from pathlib import Path
 from typing import Any
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import (
     QButtonGroup,
     QFrame,
@@ -49,7 +49,7 @@ from app.geometry.profile_kinds import (
     default_parameters,
 )
 from app.geometry.ratio import Ratio
-from app.geometry.width_range import WidthRange, cuttable_widths
+from app.geometry.width_range import WidthRange
 from app.machine.commands import SelectRecipe
 from app.machine.program_export import ExportFormat, export_file_name, export_text
 from app.machine.snapshot import MachineSnapshot
@@ -64,8 +64,10 @@ from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import set_text, styled_label
+from app.screens.width_ranges import PENDING, WidthRanges
 
 DEFAULT_PREVIEW_WIDTH_MM = 150.0
+RANGE_POLL_MS = 50  # how often the list looks for width ranges the worker has finished
 LABEL_WIDTH_PX = 165
 NUMBER_FIELDS = (
     "length_mm",
@@ -302,7 +304,11 @@ class RecipesScreen(Screen):
         self.width_caption = styled_label("", "caption")
         self.range_label = styled_label("", "caption", "previewWidthRange")
         self.range_label.setWordWrap(True)
-        self._ranges: dict[str, WidthRange | None] = {}
+        self.width_ranges = WidthRanges(self.limits)
+        self._range_timer = QTimer(self)
+        self._range_timer.setInterval(RANGE_POLL_MS)
+        self._range_timer.timeout.connect(self._ranges_arrived)
+        self.destroyed.connect(self.width_ranges.close)
         self.program_button = touch_button("exportProgram")
         self.program_button.clicked.connect(self.export_program)
         self.plan_view = PlanView(show_cutter=False)
@@ -456,9 +462,11 @@ class RecipesScreen(Screen):
         )
         self.recipe_list.clear()
         for recipe in self.recipes:
-            item = QListWidgetItem(f"{recipe.id}  {recipe.name}")
+            item = QListWidgetItem(self._list_text(recipe))
             item.setData(Qt.ItemDataRole.UserRole, recipe.id)
             self.recipe_list.addItem(item)
+        if self.width_ranges.pending:
+            self._range_timer.start()
         target = next((r for r in self.recipes if r.id == keep), None)
         if target is None and self.recipes and self.draft is None:
             loaded = self.snapshot.recipe_id if self.snapshot is not None else None
@@ -470,6 +478,33 @@ class RecipesScreen(Screen):
             self.current = None
             self.draft = None
             self.show_draft()
+
+    def _list_text(self, recipe: Recipe) -> str:
+        """The list's line: number, name and the widths the recipe cuts on this machine (filled
+        in by the worker; the list does not wait for it)."""
+        widths = self.width_ranges.get(recipe, self.parameters)
+        if widths == PENDING:
+            range_text = "…"
+        elif isinstance(widths, WidthRange):
+            range_text = (
+                self.tr("%1 to %2 mm")
+                .replace("%1", format_number(widths.min_mm, 1))
+                .replace("%2", format_number(widths.max_mm, 1))
+            )
+        else:
+            range_text = self.tr("cuts no board here")
+        return f"{recipe.id}  {recipe.name}\n{range_text}"
+
+    def _ranges_arrived(self) -> None:
+        if self.width_ranges.collect():
+            for row in range(self.recipe_list.count()):
+                item = self.recipe_list.item(row)
+                recipe_id = item.data(Qt.ItemDataRole.UserRole)
+                recipe = next((r for r in self.recipes if r.id == recipe_id), None)
+                if recipe is not None:
+                    item.setText(self._list_text(recipe))
+        if not self.width_ranges.pending:
+            self._range_timer.stop()
 
     def _row_of(self, recipe_id: int | None) -> int:
         for row in range(self.recipe_list.count()):
@@ -802,10 +837,7 @@ class RecipesScreen(Screen):
     def _width_range(self, recipe: Recipe) -> WidthRange | None:
         """The recipe's range of board widths on this machine (cached: a scan of the
         machine's own composition, some 0.1 s, done again only when the stave changes)."""
-        key = repr((recipe.stave, sorted(self.parameters.items())))
-        if key not in self._ranges:
-            self._ranges = {key: cuttable_widths(recipe.stave, self.parameters, self.limits)}
-        return self._ranges[key]
+        return self.width_ranges.now(recipe, self.parameters)
 
     # -- actions -----------------------------------------------------------------------------
 

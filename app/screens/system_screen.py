@@ -31,7 +31,9 @@ from PySide6.QtWidgets import (
 
 from app.data.errors import DataError, FieldValidationError
 from app.data.parameters import (
+    CONFIGURATION_GROUPS,
     PARAMETERS,
+    UNUSED_PARAMETERS,
     ParameterSpec,
     check_parameter_set,
     check_parameter_value,
@@ -316,7 +318,7 @@ class SystemScreen(Screen):
         self.param_labels.clear()
         row = 0
         for spec in PARAMETERS:
-            if spec.group != group:
+            if spec.group != group or spec.name in UNUSED_PARAMETERS:
                 continue
             description = styled_label(parameter_text(spec.description), "value")
             description.setWordWrap(True)
@@ -331,11 +333,19 @@ class SystemScreen(Screen):
                 caption_text += " · " + self.tr("needs %1").replace(
                     "%1", role_text(spec.required_role)
                 )
+            value = self.values[spec.name]
+            if spec.group in CONFIGURATION_GROUPS:
+                # What the machine enforces comes from its configuration: shown, not edited.
+                value = getattr(self.context.database.limits, spec.name)
+                caption_text = f"{spec.name} · " + self.tr(
+                    "enforced by the machine, set in its configuration file"
+                )
+                allowed = False
             caption = styled_label(caption_text, "caption")
             caption.setWordWrap(True)
             button = touch_button(f"param_{spec.name}", "field")
             button.setMinimumWidth(190)
-            button.setText(f"{format_number(self.values[spec.name], 6)}{unit}")
+            button.setText("—" if value is None else f"{format_number(value, 6)}{unit}")
             button.setEnabled(allowed)
             button.clicked.connect(lambda _=False, s=spec: self.edit_parameter(s))
             labels = QVBoxLayout()

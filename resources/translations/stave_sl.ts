@@ -1555,7 +1555,7 @@ izmena</translation>
 <context>
     <name>OpcuaPage</name>
     <message>
-        <location filename="../../app/screens/opcua_page.py" line="+85"/>
+        <location filename="../../app/screens/opcua_page.py" line="+89"/>
         <source>OPC UA plant connection</source>
         <translation>Povezava OPC UA z obratom</translation>
     </message>
@@ -1630,12 +1630,12 @@ izmena</translation>
         <translation>To uporabljajte samo za zagon naprave (konfiguracija [opcua]).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Endpoint: %1</source>
         <translation>Končna točka: %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+59"/>
         <source>Certificate %1 trusted by %2 (logged).</source>
         <translation>Potrdilo %1 je označil kot zaupanja vredno %2 (zabeleženo).</translation>
     </message>
@@ -1837,7 +1837,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+347"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+353"/>
         <location line="+73"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
@@ -1995,18 +1995,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+521"/>
+        <location line="+547"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-520"/>
-        <location line="+570"/>
+        <location line="-546"/>
+        <location line="+596"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-569"/>
+        <location line="-595"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -2017,12 +2017,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+90"/>
+        <location line="+119"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-89"/>
+        <location line="-118"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
@@ -2043,12 +2043,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+328"/>
+        <location line="+357"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-327"/>
+        <location line="-356"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -2068,7 +2068,17 @@ izmena</translation>
         <translation>Polmer R</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+47"/>
+        <source>%1 to %2 mm</source>
+        <translation>%1 do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>cuts no board here</source>
+        <translation>tu ne reže nobene deske</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>Unsaved changes</source>
         <translation>Neshranjene spremembe</translation>
     </message>
@@ -2100,12 +2110,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+196"/>
+        <location line="+193"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-194"/>
+        <location line="-191"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -2135,7 +2145,7 @@ izmena</translation>
         <translation>Zunaj širin, ki jih ta recept reže na tem stroju</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+24"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>
@@ -2451,7 +2461,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+215"/>
+        <location filename="../../app/screens/system_screen.py" line="+217"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -2587,6 +2597,11 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <location line="+64"/>
         <source>needs %1</source>
         <translation>potrebna raven: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>enforced by the machine, set in its configuration file</source>
+        <translation>stroj jih upošteva, nastavljene so v njegovi konfiguracijski datoteki</translation>
     </message>
     <message>
         <location line="+53"/>

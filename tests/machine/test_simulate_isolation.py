@@ -15,7 +15,7 @@ import pytest
 from app.cli import main
 from app.data.database import Database
 from app.data.records import PieceResult, ProductionRecord
-from app.data.users import SIMULATION_ACTOR
+from app.data.users import CONFIGURATION_ACTOR, SIMULATION_ACTOR
 from app.machine.database_store import open_store
 from tests.drivers.sim.rig import make_config
 
@@ -119,12 +119,16 @@ def test_a_fault_without_effect_in_its_step_is_said(capsys: pytest.CaptureFixtur
     assert "injected drive_fault@cutting_b: raised E010" in out
 
 
-@pytest.mark.parametrize(("backend", "logged"), [("sim", SIMULATION_ACTOR), ("modbus", "service")])
+@pytest.mark.parametrize(
+    ("backend", "seeded", "logged"),
+    [("sim", SIMULATION_ACTOR, SIMULATION_ACTOR), ("modbus", CONFIGURATION_ACTOR, "service")],
+)
 def test_what_the_simulated_machine_changes_is_logged_as_the_simulation(
-    tmp_path: Path, backend: str, logged: str
+    tmp_path: Path, backend: str, seeded: str, logged: str
 ) -> None:
     """Seeded factory parameters and a recipe the run is given: the simulation's, by name; on
-    a real backend the same changes are the service user's."""
+    a real backend the factory values are the configuration's (nobody changed them) and a
+    recipe the run is given is the service user's."""
     config = make_config()
     config = replace(
         config, backend=backend, process=replace(config.process, lead_mm=config.process.lead_mm + 1)
@@ -135,7 +139,7 @@ def test_what_the_simulated_machine_changes_is_logged_as_the_simulation(
         assert recipe is not None
         store.save_recipe(replace(recipe, id=None, name="Given by the run"))
         [change] = store.db.parameter_history("lead_mm")
-        assert change.user_name == logged
+        assert change.user_name == seeded
         assert store.db.recipe_history()[0].user_name == logged
     finally:
         store.close()

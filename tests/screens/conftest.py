@@ -53,7 +53,11 @@ def db_path(template_db: Path, tmp_path: Path) -> Path:
 
 @pytest.fixture
 def database(db_path: Path) -> Iterator[Database]:
-    db = Database.open(db_path)
+    """The panel's database, with the machine's travel limits (as the application opens it)."""
+    from app.config import load_config
+    from app.machine.process_params import stave_limits
+
+    db = Database.open(db_path, limits=stave_limits(load_config()))
     yield db
     db.close()
 

@@ -9,6 +9,7 @@ from datetime import UTC, datetime, timedelta
 
 import pytest
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QPushButton
 
 from app.data.database import Database
 from app.data.records import AlarmState as AlarmRecordState
@@ -195,6 +196,12 @@ def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -
     change = database.parameter_history(name="tool_radius_mm")[0]
     assert change.new_value == 30.0 and change.user_name == "technician"
     assert find_button(window, "param_tool_radius_mm").text() == "30 mm"
+    assert window.findChild(QPushButton, "param_solver_tolerance_mm") is None  # never read
+    tap(find_button(window, "group_limits"))  # what the machine enforces, read-only
+    limits = database.limits
+    for name, shown in (("x_max_mm", limits.x_max_mm), ("z_min_deg", limits.z_min_deg)):
+        button = find_button(window, f"param_{name}")
+        assert not button.isEnabled() and button.text().startswith(f"{shown:g} ")
     tap(find_button(window, "group_log"))
     assert screen.log_table.item(0, 1).text() == "tool_radius_mm"
 

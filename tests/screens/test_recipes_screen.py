@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import json
 
+from app.geometry.width_range import cuttable_widths
+from app.screens.formatting import format_number
 from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from app.screens.widgets.keyboard import TextKeyboard
@@ -202,10 +204,14 @@ def test_preview_width_follows_the_keypad(qtbot, window, tap) -> None:
     tap(find_button(keypad, "okButton"))
     assert keypad.is_open  # above the 280 mm the machine takes
     tap(find_button(keypad, "key_clear"))
-    keys(tap, keypad, "200")
+    keys(tap, keypad, "160")
     tap(find_button(keypad, "okButton"))
-    assert screen.preview.width_mm == 200.0 and screen.preview.ok
+    assert screen.preview.width_mm == 160.0 and screen.preview.ok
     assert screen.plan_view.outline_item.getData()[0] is not None
+    # 200 mm tilts the first recipe's bevel beyond this machine's Z travel (+-15 deg).
+    screen.set_preview_width(200.0)
+    assert not screen.preview.ok
+    assert "Outside the widths" in screen.preview_errors.text()
 
 
 def test_the_recipe_on_the_machine_is_not_deleted_and_a_saved_change_asks(
@@ -249,3 +255,16 @@ def test_the_recipe_on_the_machine_is_not_deleted_and_a_saved_change_asks(
             machine.controller.recipe is not None and machine.controller.recipe.thickness_mm == 34.0
         ),
     )
+
+
+def test_the_list_shows_each_recipes_widths_on_this_machine(qtbot, window, database, tap) -> None:
+    screen = open_recipes(window, tap)
+    items = [screen.recipe_list.item(row) for row in range(screen.recipe_list.count())]
+    assert items and all("\n" in item.text() for item in items)  # at once, ranges to follow
+    qtbot.waitUntil(lambda: not any(item.text().endswith("…") for item in items), timeout=20_000)
+    parameters = database.get_parameters()
+    for recipe, item in zip(database.list_recipes(), items, strict=True):
+        widths = cuttable_widths(recipe.stave, parameters, database.limits)  # the machine's own
+        assert widths is not None, recipe.name  # the shipped recipes fit the shipped machine
+        expected = f"{format_number(widths.min_mm, 1)} to {format_number(widths.max_mm, 1)} mm"
+        assert item.text() == f"{recipe.id}  {recipe.name}\n{expected}"
