@@ -210,10 +210,8 @@ class MachineController(CycleControl):
 
     def _home(self, axis: str) -> None:
         homing = HomingSequence.for_axes(axis, self.config.axes, self.now_s)
-        if self.inputs.part_present or self.inputs.clamps_closed:
-            length = self.recipe.length_mm if self.recipe is not None else None
-            # The board on the table as far as it is known: the widest the table takes.
-            board = TableKeepOut.largest_board(self.params, stave_limits(self.config), length)
+        board = self._board_keep_out()
+        if board is not None:
             limits = motion_limits(self.config, self.params)
             try:
                 where = self.axes.positions()
@@ -228,6 +226,14 @@ class MachineController(CycleControl):
         self.homing = homing
         if self.state is not MachineState.MANUAL:
             self._transition(Event.HOME)
+
+    def _board_keep_out(self) -> TableKeepOut | None:
+        """The board on the table (part sensor or clamps) as far as it is known: the widest
+        the table takes, of the recipe's length; None when the table is empty."""
+        if not (self.inputs.part_present or self.inputs.clamps_closed):
+            return None
+        length = self.recipe.length_mm if self.recipe is not None else None
+        return TableKeepOut.largest_board(self.params, stave_limits(self.config), length)
 
     def _stop(self) -> None:
         if self.now_s - self._last_stop_s < STOP_LOCKOUT_S:
@@ -308,6 +314,8 @@ class MachineController(CycleControl):
         self.sim_tools.tick(self.inputs.part_present)
         self._process_buttons()
         self._supervise()
+        if self.state is MachineState.MANUAL:
+            self.manual.keep_out = self._board_keep_out()  # jogs stay out of it
         self._process_commands()
         self._check_reset()
         self._read_pendant()

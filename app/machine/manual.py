@@ -19,9 +19,12 @@ from app.config import AxisConfig
 from app.machine.axes import AxisGroup
 from app.machine.commands import JOG_DEADMAN_S
 from app.machine.planner.jog import Jogger, JogMode, ramp_distance
+from app.machine.planner.jog_keepout import jog_reach
+from app.machine.planner.keepout import TableKeepOut
 from app.machine.refusals import Reason, Refusal, refusal
 
 GROUPS: dict[str, tuple[str, ...]] = {"XY": ("X", "Y"), "Z": ("Z",)}
+_AT_KEEP_OUT = 1e-6  # a jog with less room than this toward the board is refused
 MIN_SPEED_FRACTION = 0.01  # a stick just outside its deadband still moves (1 % of jog speed)
 SPEED_CHANGE_FRACTION = 0.01  # the jog is replanned when the stick's speed changes this much
 
@@ -39,6 +42,7 @@ class ManualControl:
         self._last_refresh_s: dict[str, float] = {}
         self._holds: dict[str, int] = {}  # the hold each continuous jog belongs to
         self._ended_holds: dict[str, int] = {}  # the last hold the dead-man ended, per axis
+        self.keep_out: TableKeepOut | None = None  # the board on the table (None: none there)
 
     def speed(self, group: str) -> tuple[float, float]:
         return self._speeds[group]
@@ -89,7 +93,12 @@ class ManualControl:
         return None
 
     def press(
-        self, axis: str, direction: int, now_s: float, axes: AxisGroup, hold: int = 0
+        self,
+        axis: str,
+        direction: int,
+        now_s: float,
+        axes: AxisGroup,
+        hold: int = 0,
     ) -> Refusal | None:
         if axis in self._ended_holds and hold and self._ended_holds[axis] == hold:
             # A refresh of a hold the dead-man ended (a frozen screen catching up): only a
@@ -101,15 +110,35 @@ class ManualControl:
             return refusal(Reason.JOG_DIRECTION_INVALID, direction)
         if reason := self._toward_active_switch(axis, direction, axes):
             return reason
+        jogger = self._joggers[axis]
+        limit = jogger.limits[1] if direction > 0 else jogger.limits[0]
+        stop_at = self._reach(axis, limit)
+        if stop_at is not None and abs(stop_at - jogger.position) < _AT_KEEP_OUT:
+            return refusal(Reason.JOG_AT_BOARD, axis)
         self._last_refresh_s[axis] = now_s
         self._holds[axis] = hold
-        return self._joggers[axis].press(direction).reason
+        refused = jogger.press(direction, stop_at).reason
+        if refused is None and stop_at is not None:
+            return refusal(Reason.JOG_STOPS_AT_BOARD, axis, f"{stop_at:.1f}")
+        return refused
+
+    def _reach(self, axis: str, target: float) -> float | None:
+        """Where the board's keep-out cuts a jog of ``axis`` toward ``target`` short (None:
+        no board, or the way is clear)."""
+        if self.keep_out is None or not all(n in self._joggers for n in ("X", "Y", "Z")):
+            return None
+        xyz = tuple(self._joggers[n].position for n in ("X", "Y", "Z"))
+        reach = jog_reach(self.keep_out, xyz, axis, target)
+        return None if reach == target else reach
 
     def step(self, axis: str, distance: float, axes: AxisGroup) -> Refusal | None:
         if reason := self._check_axis(axis, axes):
             return reason
         if reason := self._toward_active_switch(axis, 1 if distance > 0 else -1, axes):
             return reason
+        target = self._joggers[axis].step_base + distance
+        if (reach := self._reach(axis, target)) is not None:
+            return refusal(Reason.JOG_STEP_INTO_BOARD, axis, f"{reach:.1f}")
         result = self._joggers[axis].step(distance)
         return None if result.accepted else result.reason
 

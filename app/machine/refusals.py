@@ -91,6 +91,12 @@ class Reason(enum.Enum):
     LIMIT_SWITCH_NEGATIVE = "%1- limit switch is active: jog %1 in the + direction only"
     STEP_OF_ZERO = "a step of 0 moves nothing"
     RELEASE_JOG_FIRST = "axis %1 is moving: release the jog first"
+    JOG_AT_BOARD = "jog %1 refused: the cutter is at the board's keep-out (a board is on the table)"
+    JOG_STOPS_AT_BOARD = "jog %1 stops at %2, the edge of the board's keep-out"
+    JOG_STEP_INTO_BOARD = (
+        "step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on "
+        "the table)"
+    )
     JOG_HOLD_ENDED = (
         "jog %1 was stopped: no refresh from the screen for %2 s; release the button and "
         "press it again"

@@ -54,6 +54,11 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "homing refused: %1"),
     QT_TRANSLATE_NOOP(
         "MachineText",
+        "jog %1 refused: the cutter is at the board's keep-out (a board is on the table)",
+    ),
+    QT_TRANSLATE_NOOP("MachineText", "jog %1 stops at %2, the edge of the board's keep-out"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
         "jog %1 was stopped: no refresh from the screen for %2 s; release the button and press it again",
     ),
     QT_TRANSLATE_NOOP("MachineText", "jog direction %1 is not allowed: -1 or 1"),
@@ -98,6 +103,10 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "reset failed"),
     QT_TRANSLATE_NOOP("MachineText", "resuming the board"),
     QT_TRANSLATE_NOOP("MachineText", "select a recipe first"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
+        "step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)",
+    ),
     QT_TRANSLATE_NOOP(
         "MachineText", "the USB pendant is jogging: let it and the axes come to rest first"
     ),

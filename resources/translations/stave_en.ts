@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+122" />
+        <location filename="catalogue_strings.py" line="+131" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
     </message>
@@ -677,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-145" />
+        <location filename="catalogue_strings.py" line="-154" />
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -840,6 +840,16 @@
         <location line="+3" />
         <source>homing refused: %1</source>
         <translation>homing refused: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>jog %1 refused: the cutter is at the board's keep-out (a board is on the table)</source>
+        <translation>jog %1 refused: the cutter is at the board's keep-out (a board is on the table)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>jog %1 stops at %2, the edge of the board's keep-out</source>
+        <translation>jog %1 stops at %2, the edge of the board's keep-out</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1018,6 +1028,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)</source>
+        <translation>step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>the USB pendant is jogging: let it and the axes come to rest first</source>
         <translation>the USB pendant is jogging: let it and the axes come to rest first</translation>
     </message>

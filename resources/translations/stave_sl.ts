@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+122"/>
+        <location filename="catalogue_strings.py" line="+131"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -677,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-145"/>
+        <location filename="catalogue_strings.py" line="-154"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -840,6 +840,16 @@
         <location line="+3"/>
         <source>homing refused: %1</source>
         <translation>referenciranje zavrnjeno: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog %1 refused: the cutter is at the board&apos;s keep-out (a board is on the table)</source>
+        <translation>ročni premik %1 zavrnjen: rezilo je na meji zaščitnega območja deske (na mizi je deska)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>jog %1 stops at %2, the edge of the board&apos;s keep-out</source>
+        <translation>ročni premik %1 se ustavi pri %2, na meji zaščitnega območja deske</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1018,6 +1028,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>step of %1 refused: the cutter would enter the board&apos;s keep-out at %2 (a board is on the table)</source>
+        <translation>korak %1 zavrnjen: rezilo bi pri %2 vstopilo v zaščitno območje deske (na mizi je deska)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>the USB pendant is jogging: let it and the axes come to rest first</source>
         <translation>USB-upravljalnik premika: najprej naj se umiri on in osi</translation>
     </message>

@@ -9,6 +9,7 @@ from typing import Any
 import pytest
 
 from app.config import MachineConfig, load_config
+from app.data.users import Role
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState
@@ -58,6 +59,12 @@ class Rig:
         self.run(0.05)
         self.world.load_board(width_mm)
         self.run(0.05)
+
+    def set_parameters(self, values: dict[str, float]) -> None:
+        """What the System screen does: store the parameters, then tell the machine."""
+        db = self.controller.store.db  # type: ignore[attr-defined]
+        db.set_parameters(values, next(u for u in db.list_users() if u.role is Role.SERVICE))
+        self.send(cmd.ReloadParameters())
 
     def positions(self) -> tuple[float, float, float]:
         """Where the axes physically are (the simulation's truth, not the controller's

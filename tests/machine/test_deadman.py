@@ -10,7 +10,6 @@ from dataclasses import dataclass
 
 import pytest
 
-from app.data.users import Role
 from app.machine import commands as cmd
 from app.machine.alarms import AlarmCode
 from app.machine.commands import JOG_DEADMAN_S, JOG_REFRESH_S
@@ -32,13 +31,6 @@ class RunOn:
     x_stood_mm: float | None = None
 
 
-def set_parameters(rig: Rig, values: dict[str, float]) -> None:
-    """What the System screen does: store the parameters, then tell the machine."""
-    db = rig.controller.store.db  # type: ignore[attr-defined]
-    db.set_parameters(values, next(u for u in db.list_users() if u.role is Role.SERVICE))
-    rig.send(cmd.ReloadParameters())
-
-
 def run_on_bound_mm(velocity: float, acceleration: float, jerk: float, period_s: float) -> float:
     """The worst case: full speed for the dead-man time (and the period it is noticed in),
     then the jerk-limited ramp to rest, v^2/(2a) + v*a/(2j)."""
@@ -52,7 +44,7 @@ def run_on_bound_mm(velocity: float, acceleration: float, jerk: float, period_s:
 def _frozen_screen(rig: Rig, velocity: float, acceleration: float) -> RunOn:
     c = rig.controller
     rig.send(cmd.EnterManual())
-    set_parameters(rig, {"jog_xy_speed_mm_s": velocity, "jog_xy_accel_mm_s2": acceleration})
+    rig.set_parameters({"jog_xy_speed_mm_s": velocity, "jog_xy_accel_mm_s2": acceleration})
     assert c.manual.speed("XY") == (velocity, acceleration)
     hold_s = 0.3 + velocity / acceleration  # up to speed, then cruising
     held = 0.0

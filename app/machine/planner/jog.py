@@ -185,8 +185,9 @@ class Jogger:
             raise ValueError(f"axis {self.axis}: set_position while jogging is not allowed")
         self._state = (_finite("position", position), 0.0, 0.0)
 
-    def press(self, direction: int) -> JogResult:
-        """Start (or keep alive) a continuous jog in ``direction`` (+1 or -1)."""
+    def press(self, direction: int, stop_at: float | None = None) -> JogResult:
+        """Start (or keep alive) a continuous jog in ``direction`` (+1 or -1); it runs to the
+        soft limit, or to ``stop_at`` if that comes first (the board's keep-out)."""
         if direction not in (1, -1):
             raise ValueError(f"direction = {direction!r} is not allowed: +1 or -1")
         if self._mode is JogMode.CONTINUOUS and self._direction == direction:
@@ -196,6 +197,8 @@ class Jogger:
         if refused:
             return JogResult(False, None, refused)
         target = self._max if direction > 0 else self._min
+        if stop_at is not None:
+            target = min(target, stop_at) if direction > 0 else max(target, stop_at)
         self._mode = JogMode.CONTINUOUS
         self._direction = direction
         self._since_press_s = 0.0
