@@ -495,14 +495,23 @@ class RecipesScreen(Screen):
             range_text = self.tr("cuts no board here")
         return f"{recipe.id}  {recipe.name}\n{range_text}"
 
+    def fill_width_ranges(self) -> None:
+        """Wait for every recipe's range now (the screenshots: a picture with all of them)."""
+        for recipe in self.recipes:
+            self.width_ranges.now(recipe, self.parameters)
+        self._relabel()
+
+    def _relabel(self) -> None:
+        for row in range(self.recipe_list.count()):
+            item = self.recipe_list.item(row)
+            recipe_id = item.data(Qt.ItemDataRole.UserRole)
+            recipe = next((r for r in self.recipes if r.id == recipe_id), None)
+            if recipe is not None:
+                item.setText(self._list_text(recipe))
+
     def _ranges_arrived(self) -> None:
         if self.width_ranges.collect():
-            for row in range(self.recipe_list.count()):
-                item = self.recipe_list.item(row)
-                recipe_id = item.data(Qt.ItemDataRole.UserRole)
-                recipe = next((r for r in self.recipes if r.id == recipe_id), None)
-                if recipe is not None:
-                    item.setText(self._list_text(recipe))
+            self._relabel()
         if not self.width_ranges.pending:
             self._range_timer.stop()
 

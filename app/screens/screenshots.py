@@ -191,6 +191,7 @@ def render_screenshots(
 
             window.show_screen("recipes")
             screen = window.page("recipes")
+            screen.fill_width_ranges()  # type: ignore[attr-defined]
             shoot("recipes")
             screen.edit_field("thickness_mm")  # type: ignore[attr-defined]
             overlay = window.overlay()
@@ -251,6 +252,8 @@ def render_screenshots(
             window.show_screen("system")
             window.page("system").show_group("opcua")  # type: ignore[attr-defined]
             shoot("system-opcua")
+            window.page("system").show_group("limits")  # type: ignore[attr-defined]
+            shoot("system-limits")
             window.session.logout()
         finally:
             window.poller.stop()
