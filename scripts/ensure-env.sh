@@ -16,7 +16,8 @@ fi
 debs=(python3-venv libgl1 libegl1 libopengl0 libxkbcommon0 libxkbcommon-x11-0 libfontconfig1
       libdbus-1-3 libglib2.0-0 libxcb-cursor0 libxcb-icccm4 libxcb-image0 libxcb-keysyms1
       libxcb-randr0 libxcb-render-util0 libxcb-shape0 libxcb-xinerama0 libxcb-xkb1
-      libxcb-xfixes0 libx11-xcb1 fonts-dejavu-core)
+      libxcb-xfixes0 libx11-xcb1 fonts-dejavu-core
+      gcc python3-dev linux-libc-dev)  # python-evdev (USB pendants) builds from source
 # The test set-up also needs peers we did not write: LinuxCNC's standalone G-code interpreter
 # rs274 (linuxcnc-uspace; without its recommends, which would pull in a real-time kernel), and
 # an X server without a window manager (xvfb, x11-utils's xwininfo) for the kiosk test.

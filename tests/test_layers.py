@@ -41,7 +41,7 @@ ALLOWED: dict[str, tuple[str, ...]] = {
     "geometry": (),
     "programs": ("app.geometry", "ezdxf"),
     "data": ("app.geometry", "app.resources", "ezdxf", "platformdirs"),
-    "drivers": ("app.config", *FIELDBUS),
+    "drivers": ("app.config", "app.pendant_settings", "evdev", *FIELDBUS),
     "machine": (
         VERSION,
         "app.config",

@@ -325,3 +325,29 @@ class MachineBackend:
 
     def devices(self) -> list[Lifecycle]:
         return [self.motion, self.io]
+
+
+@dataclass(frozen=True)
+class PendantReading:
+    """One period of a USB pendant or gamepad: its enable button, its wheel's axis ("" off)
+    and multiplier, the increments its wheel turned since the last read (the multiplier
+    applied), and each stick's deflection (-1..1, no deadband: the machine applies it)."""
+
+    enable: bool = False
+    axis: str = ""
+    multiplier: int = 1
+    increments: int = 0
+    sticks: Mapping[str, float] = field(default_factory=dict)
+
+
+@runtime_checkable
+class PendantDevice(Protocol):
+    """A USB pendant the machine polls once per period. ``read`` never blocks; a device that
+    is missing or unplugged reads as at rest (``connected`` False) until it is back."""
+
+    @property
+    def connected(self) -> bool: ...
+
+    def read(self) -> PendantReading: ...
+
+    def close(self) -> None: ...

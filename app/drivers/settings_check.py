@@ -69,6 +69,25 @@ GAUGE_CHECKS: dict[str, Callable[[MachineConfig], None]] = {
 }
 
 
+def _evdev_pendant(config: MachineConfig) -> None:
+    """A USB pendant's event code names must be ones the Linux input layer knows."""
+    settings = config.pendant.evdev
+    if not settings.device:
+        return
+    from app.drivers.evdev_pendant.device import event_code
+
+    for role, name in settings.code_names().items():
+        try:
+            event_code(name)
+        except ValueError:
+            raise ConfigError(
+                f"pendant.evdev.{role}",
+                name,
+                "an event code name the Linux input layer knows (see evtest's list)",
+                config.source,
+            ) from None
+
+
 def check_settings(config: MachineConfig, *, to_run: bool = True) -> None:
     """ConfigError (one line, the dotted key) for the first bad table: the chosen backend's
     and gauge's, and every other backend or gauge table the file has. ``to_run``: the machine
@@ -81,3 +100,4 @@ def check_settings(config: MachineConfig, *, to_run: bool = True) -> None:
         BACKEND_CHECKS[name](config)
     for name in dict.fromkeys([config.gauge, *config.gauge_settings]):
         GAUGE_CHECKS[name](config)
+    _evdev_pendant(config)

@@ -29,7 +29,13 @@ from dataclasses import replace
 from typing import assert_never
 
 from app.config import MachineConfig
-from app.drivers.contracts import DriverError, InputImage, MachineBackend, WidthGauge
+from app.drivers.contracts import (
+    DriverError,
+    InputImage,
+    MachineBackend,
+    PendantDevice,
+    WidthGauge,
+)
 from app.machine import commands as cmd
 from app.machine.alarms import AlarmCode
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
@@ -39,7 +45,6 @@ from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.homing_clearance import homing_clearance
 from app.machine.io_table import io_table
 from app.machine.pendant.jog_sources import PendantJog
-from app.machine.pendant.reading import PendantDevice
 from app.machine.permissions import may, may_start_spindle
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.preview import PlanPublisher

@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from app.config import MachineConfig
-from app.drivers.contracts import MachineBackend, TimeDriven, WidthGauge
+from app.drivers.contracts import MachineBackend, PendantDevice, TimeDriven, WidthGauge
+from app.drivers.evdev_pendant import create_pendant
 from app.drivers.registry import create_backend, create_gauge
 from app.machine.controller import MachineController
 from app.machine.cycle import PlanSubmitter, run_now
@@ -65,12 +66,19 @@ class MachineRuntime:
         *,
         submit: PlanSubmitter = run_now,
         wall_clock: Callable[[], float] = time.time,
+        pendant: PendantDevice | None = None,
     ) -> None:
         self.config = config
         self.backend = backend if backend is not None else create_backend(config)
         self.gauge = gauge if gauge is not None else create_gauge(config, self.backend)
         self.controller = MachineController(
-            config, self.backend, self.gauge, store, submit=submit, wall_clock=wall_clock
+            config,
+            self.backend,
+            self.gauge,
+            store,
+            submit=submit,
+            wall_clock=wall_clock,
+            pendant=pendant if pendant is not None else create_pendant(config),
         )
         self.period_s = config.period_s
         self.time_s = 0.0
@@ -89,12 +97,14 @@ class MachineRuntime:
         *,
         threaded_store: bool = False,
         submit: PlanSubmitter = run_now,
+        pendant: PendantDevice | None = None,
     ) -> MachineRuntime:
-        """A runtime on the configured backends, with the database at ``db_path``."""
+        """A runtime on the configured backends, with the database at ``db_path`` (and the
+        configured USB pendant unless ``pendant`` is given)."""
         from app.machine.database_store import open_store
 
         store = open_store(db_path, config, threaded=threaded_store)
-        return cls(config, store, submit=submit)
+        return cls(config, store, submit=submit, pendant=pendant)
 
     def start(self) -> None:
         self.controller.power_up()

@@ -13,13 +13,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from app.config import MachineConfig
-from app.drivers.contracts import InputImage
+from app.drivers.contracts import InputImage, PendantDevice, PendantReading
 from app.machine.axes import AxisGroup
 from app.machine.manual import ManualControl
 from app.machine.pendant.arbitration import JogArbiter
 from app.machine.pendant.handwheel import Handwheel, WheelFollower, WheelSelection
-from app.machine.pendant.joystick import Joystick
-from app.machine.pendant.reading import PendantDevice, PendantReading
+from app.machine.pendant.joystick import Joystick, shaped
 from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.snapshot import JogSource, PendantView
 
@@ -51,6 +50,7 @@ class PendantJog:
         self._wheel = WheelFollower(config.period_s)
         self._pendant_wheel = WheelFollower(config.period_s)
         self.selection = WheelSelection("", 1)
+        self._stick_shape = (settings.evdev.deadband, settings.evdev.curve_exponent)
         self._enable = False
         self._said: set[Reason] = set()
 
@@ -110,10 +110,13 @@ class PendantJog:
             axis, offset = self.joystick.off_centre
             self._say(outcome, refusal(Reason.JOYSTICK_NOT_CENTRED, axis, offset))
         reading = self.device.read() if self.device is not None else PendantReading()
+        deadband, exponent = self._stick_shape
+        pendant_sticks = {a: shaped(d, deadband, exponent) for a, d in reading.sticks.items()}
+        pendant_moving = bool(reading.increments and reading.axis) or any(pendant_sticks.values())
         touched = {
             JogSource.HANDWHEEL: increments != 0,
             JogSource.JOYSTICK: any(sticks.values()),
-            JogSource.PENDANT: reading.moving,
+            JogSource.PENDANT: pendant_moving,
         }
         enable_dropped = self._enable and not inputs.jog_enable
         self._enable = inputs.jog_enable
@@ -132,7 +135,7 @@ class PendantJog:
             manual.release_all()  # the dead-man let go: decelerate now
         if (touched[JogSource.HANDWHEEL] or touched[JogSource.JOYSTICK]) and not inputs.jog_enable:
             self._say(outcome, Refusal(Reason.HOLD_ENABLE))
-        if reading.moving and not reading.enable:
+        if pendant_moving and not reading.enable:
             self._say(outcome, Refusal(Reason.HOLD_ENABLE))
         enabled = {
             JogSource.HANDWHEEL: touched[JogSource.HANDWHEEL] and inputs.jog_enable,
@@ -150,7 +153,7 @@ class PendantJog:
                 fraction = sticks.get(axis, 0.0) if inputs.jog_enable else 0.0
                 self._say(outcome, manual.drive(axis, fraction, now_s, axes))
         elif owner is JogSource.PENDANT:
-            self._jog_pendant(outcome, reading, now_s, manual, axes)
+            self._jog_pendant(outcome, reading, pendant_sticks, now_s, manual, axes)
         at_rest = not any(enabled.values()) and manual.at_rest
         self.arbiter.tick(now_s, at_rest)
         if self.arbiter.owner is None:
@@ -162,6 +165,7 @@ class PendantJog:
         self,
         outcome: JogOutcome,
         reading: PendantReading,
+        sticks: dict[str, float],
         now_s: float,
         manual: ManualControl,
         axes: AxisGroup,
@@ -169,10 +173,10 @@ class PendantJog:
         if not reading.enable:
             manual.release_all()
             return
-        if reading.increments and reading.selection.axis:
-            axis = reading.selection.axis
-            self._say(outcome, self._pendant_wheel.turn(axis, reading.increments, manual, axes))
-        for axis, fraction in reading.sticks.items():
+        if reading.increments and reading.axis:
+            turn = self._pendant_wheel.turn(reading.axis, reading.increments, manual, axes)
+            self._say(outcome, turn)
+        for axis, fraction in sticks.items():
             self._say(outcome, manual.drive(axis, fraction, now_s, axes))
 
     def _say(self, outcome: JogOutcome, message: Refusal | None) -> None:
