@@ -10,6 +10,7 @@ than opening a device node takes.
 
 from __future__ import annotations
 
+import contextlib
 import logging
 
 import evdev
@@ -107,8 +108,6 @@ class EvdevPendant:
 
     def close(self) -> None:
         if self._device is not None:
-            try:
+            with contextlib.suppress(OSError):  # an unplugged device's node is gone already
                 self._device.close()
-            except OSError:
-                pass
             self._device = None
