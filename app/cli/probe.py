@@ -167,7 +167,9 @@ def _text(report: dict[str, Any]) -> str:
             )
     inputs = report.get("inputs")
     if inputs:
-        lines.append("inputs: " + "  ".join(f"{k}={int(v)}" for k, v in inputs.items()))
+        # Digital inputs as 0/1, the handwheel's count and analog values as read (unwired: left out)
+        shown = (f"{k}={int(v)}" for k, v in inputs.items() if v is not None)
+        lines.append("inputs: " + "  ".join(shown))
     gauge = report.get("gauge")
     if gauge:
         if gauge["width_mm"] is not None:
