@@ -170,6 +170,44 @@ class IOConfig:
 
 
 @dataclass(frozen=True)
+class CycleConfig:
+    """Which steps of the automatic cycle overlap, and how the axes settle before a cut.
+
+    Why configurable: whether the centering device may retract while the clamps close
+    depends on the mechanics (the board must be held by one or the other at every moment);
+    off unless the machine's builder says so. The settle threshold replaces a fixed dwell:
+    the cut starts as soon as every axis' following error is below it, at most
+    ``settle_max_s`` after the axes came to rest (the former fixed dwell)."""
+
+    centering_retract_while_clamping: bool = False
+    settle_error_mm: float = 0.01  # X and Y following error below which a cut may start
+    settle_error_deg: float = 0.01  # the same for the tilt
+    settle_max_s: float = 0.1
+    return_home_between_boards: bool = False  # False: the next approach starts at side B's end
+
+
+def _read_cycle(section: Section) -> CycleConfig:
+    d = CycleConfig()
+    cycle = CycleConfig(
+        centering_retract_while_clamping=section.boolean(
+            "centering_retract_while_clamping", d.centering_retract_while_clamping
+        ),
+        settle_error_mm=section.number(
+            "settle_error_mm", d.settle_error_mm, 0.0, 1.0, exclusive_minimum=True
+        ),
+        settle_error_deg=section.number(
+            "settle_error_deg", d.settle_error_deg, 0.0, 1.0, exclusive_minimum=True
+        ),
+        settle_max_s=section.number("settle_max_s", d.settle_max_s, 0.0, 5.0),
+        return_home_between_boards=section.boolean(
+            "return_home_between_boards", d.return_home_between_boards
+        ),
+    )
+    section.finish()
+    return cycle
+
+
+@dataclass(frozen=True)
 class ProcessDefaults:
     """Factory values of the process parameters; the database holds the current ones."""
 
@@ -201,6 +239,7 @@ class MachineConfig:
     given_keys: frozenset[str] = frozenset()
     opcua: OpcuaSettings = field(default_factory=OpcuaSettings)
     pendant: PendantSettings = field(default_factory=PendantSettings)
+    cycle: CycleConfig = field(default_factory=CycleConfig)
 
     def with_backend(self, backend: str | None = None, gauge: str | None = None) -> MachineConfig:
         """The same configuration with the backends chosen on the command line."""
@@ -358,6 +397,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
 
     opcua = read_opcua_settings(root.table("opcua"))
     pendant = read_pendant_settings(root.table("pendant"))
+    cycle = _read_cycle(root.table("cycle"))
 
     root.finish()
     return MachineConfig(
@@ -376,6 +416,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
         language,
         opcua=opcua,
         pendant=pendant,
+        cycle=cycle,
     )
 
 

@@ -401,6 +401,10 @@ class MachineController(CycleControl):
         return self.production.last_cycle_time_s
 
     @property
+    def last_step_times_s(self) -> dict[str, float]:
+        return self.production.last_step_times_s
+
+    @property
     def pieces_shift(self) -> int:
         return self.production.pieces_shift
 

@@ -26,7 +26,7 @@ from app.machine.cycle_plan import PlannedStave, PlanningError
 from app.machine.cycle_times import StepClock, TimedStep, timed_step
 from app.machine.executor import ExecutorOutput, PathExecutor
 from app.machine.planner.continuation import Continuation
-from app.machine.planner.keepout import KeepOutRefused
+from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.planner.trajectory import Phase
 from app.machine.states import CycleStep
 
@@ -133,6 +133,12 @@ class AutomaticCycle:
         self._cut_executor: PathExecutor | None = None
         self._interrupted_phase = interrupted_phase
         self._clock = StepClock(started_s)
+        self._spindle_on_s: float | None = None
+        self._waiting_since_s: float | None = None
+        self._keep_out: TableKeepOut | None = None
+        self._entered_side_b = False
+        self._clamps_released = False
+        self._spindle_ran = False  # the spindle has reported running since it was switched on
 
     @property
     def is_continuation(self) -> bool:
@@ -256,10 +262,10 @@ class AutomaticCycle:
                 AlarmCode.CENTERING_SENSOR,
                 "centering device extended",
             ):
-                outputs = replace(outputs, clamps_close=True)
+                outputs = self._clamp(outputs)
                 self._go(CycleStep.CLAMPING, now_s)
         elif step is CycleStep.CLAMPING:
-            outputs = replace(outputs, clamps_close=True)
+            outputs = self._clamp(outputs)
             if self._wait_sensor(
                 inputs.clamps_closed,
                 now_s,
@@ -274,26 +280,17 @@ class AutomaticCycle:
             outputs = self._measure(now_s, inputs, outputs, axes)
         elif step is CycleStep.STARTING_SPINDLE:
             outputs = replace(outputs, spindle_on=True)
+            if self._spindle_on_s is None:
+                self._spindle_on_s = now_s
             # The cutter passes where the centering device stood: it must be back first.
-            centered_out = self._wait_sensor(
+            if self._wait_sensor(
                 inputs.centering_retracted,
                 now_s,
                 io.centering_time_s,
                 AlarmCode.CENTERING_SENSOR,
                 "centering device retracted",
-            )
-            if centered_out and self._wait_sensor(
-                inputs.spindle_running,
-                now_s,
-                io.spindle_runup_s,
-                AlarmCode.SPINDLE_NOT_STARTED,
-                "spindle running feedback",
             ):
-                assert self.planned is not None
-                self.executor = PathExecutor(self.planned.plan, self._config.period_s)
-                self.executor.set_override(self._override_pct)
-                self._cut_executor = self.executor
-                self._go(_PHASE_STEPS[self.executor.phase], now_s)
+                self._start_path(now_s)
         elif step in _PATH_STEPS:
             outputs = self._cut(now_s, inputs, outputs, axes)
         elif step is CycleStep.UNCLAMPING:
@@ -317,6 +314,82 @@ class AutomaticCycle:
     def step_times_s(self) -> dict[str, float]:
         """The step times so far (the whole cycle's once it has finished)."""
         return self._clock.seconds()
+
+    def _clamp(self, outputs: OutputImage) -> OutputImage:
+        """Close the clamps. Overlap (a configuration choice, for mechanics that hold the
+        board throughout): the centering device retracts while they close, so the cutter
+        need not wait for its stroke after the board is clamped."""
+        overlap = self._config.cycle.centering_retract_while_clamping
+        return replace(outputs, clamps_close=True, centering_extend=not overlap)
+
+    def _start_path(self, now_s: float) -> None:
+        """Start the planned motion with the spindle still running up.
+
+        Overlap: the spindle runs up during the approach instead of before it. Safe because
+        the executor waits at the first point of every cut (the lead-in, outside the board's
+        keep-out) until the spindle reports running and the axes have settled
+        (:meth:`_release_cut`); a spindle that never comes up leaves the cutter standing
+        there, clear of the board, and raises E042 (spindle did not start).
+        Overlap: unless the configuration asks for the original return home between boards,
+        the path ends with side B; the next board's approach starts from there (planned
+        around that board's keep-out like any approach)."""
+        assert self.planned is not None
+        home = self._config.cycle.return_home_between_boards
+        self.executor = PathExecutor(
+            self.planned.plan,
+            self._config.period_s,
+            wait_before_cuts=True,
+            end_before=None if home else Phase.RETURN,
+        )
+        self.executor.set_override(self._override_pct)
+        self._cut_executor = self.executor
+        self._keep_out = TableKeepOut.around_toolpath(self.planned.toolpath)
+        self._go(_PHASE_STEPS[self.executor.phase], now_s)
+
+    def _release_cut(self, now_s: float, inputs: InputImage, axes: AxisGroup) -> None:
+        """At a cut's first point: cut once the spindle runs and the following error of every
+        axis has settled below the configured threshold (instead of a fixed dwell: usually
+        a few periods), or ``settle_max_s`` after arriving at the latest."""
+        executor = self.executor
+        assert executor is not None
+        if self._waiting_since_s is None:
+            self._waiting_since_s = now_s
+        if not inputs.spindle_running:
+            if self._spindle_ran:  # it ran and stopped: not a slow start
+                raise CycleFault(
+                    AlarmCode.SPINDLE_STOPPED, "spindle running feedback lost", "spindle"
+                )
+            spindle_on_s = now_s if self._spindle_on_s is None else self._spindle_on_s
+            limit_s = self._config.io.spindle_runup_s + self._config.io.sensor_timeout_s
+            if now_s - spindle_on_s > limit_s:
+                raise CycleFault(
+                    AlarmCode.SPINDLE_NOT_STARTED,
+                    f"spindle running feedback not reached after {limit_s:.1f} s "
+                    "(the cutter waits at the lead-in, clear of the board)",
+                    "spindle",
+                )
+            return
+        settings = self._config.cycle
+        settled = all(
+            abs(fb.following_error)
+            <= (settings.settle_error_deg if name == "Z" else settings.settle_error_mm)
+            for name, fb in axes.feedback.items()
+        )
+        if settled or now_s - self._waiting_since_s >= settings.settle_max_s - 1e-9:
+            executor.release()
+            self._waiting_since_s = None
+
+    def _clear_of_board(self, out: ExecutorOutput, axes: AxisGroup) -> bool:
+        """True once the cutter has left the board for good: on the return, or out of the
+        board's keep-out again after side B entered it (measured at the actual position)."""
+        if out.phase is Phase.RETURN:
+            return True
+        if out.phase is not Phase.CUT_B or self._keep_out is None:
+            return False
+        inside = self._keep_out.inside(axes.positions())
+        if inside:
+            self._entered_side_b = True
+        return self._entered_side_b and not inside
 
     def _request_width(self) -> None:
         try:
@@ -421,6 +494,9 @@ class AutomaticCycle:
     ) -> OutputImage:
         executor = self.executor
         assert executor is not None
+        if executor.waiting:
+            self._release_cut(now_s, inputs, axes)
+        self._spindle_ran = self._spindle_ran or inputs.spindle_running
         out = executor.step()
         self.last_output = out
         axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
@@ -429,6 +505,12 @@ class AutomaticCycle:
             self._go(step, now_s)
         if out.cutting and not inputs.spindle_running:
             raise CycleFault(AlarmCode.SPINDLE_STOPPED, "spindle running feedback lost", "spindle")
+        # Overlap: the clamps open as soon as the cutter is clear of the board, while it
+        # still runs out along the lead-out (or returns), not after it has stopped.
+        if not self._clamps_released and self._clear_of_board(out, axes):
+            self._clamps_released = True
+        if self._clamps_released:
+            outputs = replace(outputs, clamps_close=False)
         if out.phase is Phase.RETURN:
             outputs = replace(outputs, spindle_on=False)
         if out.done:

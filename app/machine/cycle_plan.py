@@ -9,6 +9,7 @@ the motion planning is added here.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -23,7 +24,12 @@ from app.machine.alarms import AlarmCode
 from app.machine.barrel_set import NextStave
 from app.machine.planner.keepout import KeepOutRefused
 from app.machine.planner.limits import MotionLimits
-from app.machine.planner.stave_plan import StavePlan, plan_stave
+from app.machine.planner.stave_plan import (
+    JOIN_TOLERANCE_MM,
+    StavePlan,
+    from_first_cut,
+    plan_stave,
+)
 
 
 class PlanningError(Exception):
@@ -95,8 +101,12 @@ def plan_board(
         elif not widths.contains(width_mm):
             code, message = AlarmCode.WIDTH_NOT_ALLOWED, widths.refusal(width_mm)
         raise PlanningError(code, message, exc.errors) from exc
+    toolpath = cut.toolpath
+    first = toolpath.segments[0]
+    if math.dist(start_xyz, (*first.start, first.z_start_deg)) > JOIN_TOLERANCE_MM:
+        toolpath = from_first_cut(toolpath)  # straight to the lead-in, not through home
     try:
-        plan = plan_stave(cut.toolpath, start_xyz, motion_limits)
+        plan = plan_stave(toolpath, start_xyz, motion_limits)
     except KeepOutRefused as exc:
         raise PlanningError(AlarmCode.APPROACH_CROSSES_BOARD, str(exc)) from exc
     except (ValueError, ArithmeticError) as exc:

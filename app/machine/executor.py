@@ -61,6 +61,7 @@ class ExecutorState(enum.Enum):
     STOPPED = "stopped"
     ABORTED = "aborted"
     DONE = "done"
+    WAITING = "waiting at a lead-in"  # at rest before a cut until release()
 
 
 @dataclass(frozen=True)
@@ -81,7 +82,18 @@ class ExecutorOutput:
 class PathExecutor:
     """Streams a :class:`ChunkedTrajectory` (a stave plan or a point-to-point move)."""
 
-    def __init__(self, trajectory: ChunkedTrajectory, period_s: float) -> None:
+    def __init__(
+        self,
+        trajectory: ChunkedTrajectory,
+        period_s: float,
+        *,
+        wait_before_cuts: bool = False,
+        end_before: Phase | None = None,
+    ) -> None:
+        """``wait_before_cuts``: hold at rest at the start of every cut entered from rest
+        (a dwell planned there is skipped: settling is the release's condition) until
+        :meth:`release`. ``end_before``: done at the first chunk of that phase (the rest of
+        the plan is not run)."""
         if (
             isinstance(period_s, bool)
             or not isinstance(period_s, int | float)
@@ -91,6 +103,8 @@ class PathExecutor:
             raise ValueError(f"period_s = {period_s!r} is not allowed: a number in (0, 0.1] s")
         self._plan = trajectory
         self._period_s = float(period_s)
+        self._count = _chunks_before(trajectory, end_before)
+        self._gates = _cut_entries(trajectory, self._count) if wait_before_cuts else frozenset()
         self._index = 0
         self._segment: RuckigTrajectory = trajectory.chunks[0].trajectory
         self._t_local = 0.0
@@ -98,6 +112,7 @@ class PathExecutor:
         self._state = ExecutorState.RUNNING
         self._elapsed_s = 0.0
         self._remaining_cache: dict[float, tuple[float, ...]] = {}
+        self._skip_to_gate()
         self._last = self._output(self._current_dof_state())
 
     # -- properties ------------------------------------------------------------------------
@@ -141,8 +156,15 @@ class PathExecutor:
 
     @property
     def dwelling(self) -> bool:
-        """True while a dwell chunk holds the axes at rest on purpose."""
+        """True while the axes stand at rest on purpose (a dwell, a wait before a cut)."""
+        if self._state is ExecutorState.WAITING:
+            return True
         return self._state is ExecutorState.RUNNING and self._chunk.chunk.dwell_s > 0.0
+
+    @property
+    def waiting(self) -> bool:
+        """True while held at rest before a cut, until :meth:`release`."""
+        return self._state is ExecutorState.WAITING
 
     @property
     def progress(self) -> float:
@@ -205,6 +227,9 @@ class PathExecutor:
 
     def request_stop(self) -> None:
         """Controlled stop along the path (IEC 60204-1 category 2): ``stopped`` once at rest."""
+        if self._state is ExecutorState.WAITING:
+            self._state = ExecutorState.STOPPED  # already at rest
+            return
         if self._state not in (ExecutorState.RUNNING, ExecutorState.HOLDING):
             return
         self._replace_segment(plan_to_rest(self._chunk.chunk, self._current_dof_state()))
@@ -218,17 +243,27 @@ class PathExecutor:
         if self._state is not ExecutorState.DONE:
             self._state = ExecutorState.ABORTED
 
+    def release(self) -> None:
+        """Start the cut the executor waits before (no effect unless waiting)."""
+        if self._state is not ExecutorState.WAITING:
+            return
+        self._state = ExecutorState.RUNNING
+        self._segment = self._segment_for_new_chunk()
+        self._t_local = 0.0
+
     # -- the period --------------------------------------------------------------------------
     def step(self) -> ExecutorOutput:
         """Advance one period and return its setpoints."""
         if self._state in (ExecutorState.DONE, ExecutorState.STOPPED, ExecutorState.ABORTED):
             return self._last
         self._elapsed_s += self._period_s
+        if self._state is ExecutorState.WAITING:
+            return self._last
         self._t_local += self._period_s
         if self._state is ExecutorState.RUNNING:
             while self._state is ExecutorState.RUNNING and self._t_local >= self._segment.duration:
                 carry = self._t_local - self._segment.duration
-                if self._index + 1 >= len(self._plan.chunks):
+                if self._index + 1 >= self._count:
                     self._state = ExecutorState.DONE
                     self._t_local = self._segment.duration
                     self._last = self._end_output()
@@ -236,6 +271,8 @@ class PathExecutor:
                 self._index += 1
                 self._segment = self._segment_for_new_chunk()
                 self._t_local = carry
+                if self._skip_to_gate():
+                    break
         if self._state is not ExecutorState.RUNNING and self._t_local >= self._segment.duration:
             # holding or stopping: at rest now
             self._t_local = self._segment.duration
@@ -248,6 +285,24 @@ class PathExecutor:
     @property
     def _chunk(self) -> PlannedChunk:
         return self._plan.chunks[self._index]
+
+    def _skip_to_gate(self) -> bool:
+        """At a dwell before a gate, or at a gate: go to the gate and wait there (at rest,
+        at the cut's first point). True if now waiting."""
+        index = self._index
+        while (
+            index + 1 < self._count
+            and index + 1 in self._gates
+            and _is_dwell(self._plan.chunks[index])
+        ):
+            index += 1
+        if index not in self._gates:
+            return False
+        self._index = index
+        self._segment = self._chunk.trajectory
+        self._t_local = 0.0
+        self._state = ExecutorState.WAITING
+        return True
 
     def _current_dof_state(self) -> DofState:
         return state_at(self._segment, self._t_local)
@@ -269,7 +324,8 @@ class PathExecutor:
     def _output(self, state: DofState) -> ExecutorOutput:
         chunk = self._chunk.chunk
         (x, y, z), (vx, vy, vz), cutting = chunk.state(state[0], state[1])
-        return ExecutorOutput(x, y, z, chunk.phase, cutting, False, vx, vy, vz)
+        waiting = self._state is ExecutorState.WAITING  # before the cut: not cutting yet
+        return ExecutorOutput(x, y, z, chunk.phase, cutting and not waiting, False, vx, vy, vz)
 
     def _end_output(self) -> ExecutorOutput:
         chunk = self._chunk.chunk
@@ -288,5 +344,28 @@ class PathExecutor:
                     float(plan_to_end(c.chunk, rest_state(c.chunk), key, c.chunk.dwell_s).duration)
                     for c in self._plan.chunks
                 )
-            self._remaining_cache[key] = cached
-        return cached
+            self._remaining_cache[key] = cached[: self._count]
+        return cached[: self._count]
+
+
+def _is_dwell(planned: PlannedChunk) -> bool:
+    return planned.chunk.dwell_s > 0.0
+
+
+def _chunks_before(trajectory: ChunkedTrajectory, phase: Phase | None) -> int:
+    """How many chunks come before the first of ``phase`` (all of them if none is)."""
+    for index, planned in enumerate(trajectory.chunks):
+        if index and planned.chunk.phase is phase:
+            return index
+    return len(trajectory.chunks)
+
+
+def _cut_entries(trajectory: ChunkedTrajectory, count: int) -> frozenset[int]:
+    """The chunks that begin cutting from rest after something else than a cut (travel, a
+    dwell, or nothing): where the spindle must run and the axes be settled."""
+    chunks = trajectory.chunks[:count]
+    return frozenset(
+        index
+        for index, planned in enumerate(chunks)
+        if planned.chunk.cutting and (index == 0 or not chunks[index - 1].chunk.cutting)
+    )

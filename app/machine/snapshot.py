@@ -161,6 +161,8 @@ class MachineSnapshot:
     io_points: tuple[IoPoint, ...] = ()  # every input, then every output, in image order
     pendant: PendantView = field(default_factory=PendantView)
     barrel: BarrelView | None = None  # the barrel being raised (None: single staves)
+    # Where the last finished cycle's seconds went: (timed step name, seconds), in order.
+    last_step_times_s: tuple[tuple[str, float], ...] = ()
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

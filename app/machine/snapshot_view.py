@@ -60,6 +60,9 @@ class MachineController(Protocol):
     def last_cycle_time_s(self) -> float | None: ...
 
     @property
+    def last_step_times_s(self) -> dict[str, float]: ...
+
+    @property
     def plan_id(self) -> int: ...
 
     def facts(self) -> Facts: ...
@@ -141,6 +144,7 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         message=c.message,
         io_points=c.io_points,
         barrel=barrel_view(c.barrel),
+        last_step_times_s=tuple(c.last_step_times_s.items()),
     )
 
 

@@ -46,6 +46,7 @@ from app.screens.widgets.io_strip import LAMP_PX as IO_LAMP_PX
 from app.screens.widgets.io_strip import IoStrip
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import AxisReadout, ValueTile, set_text, styled_label
+from app.screens.widgets.step_times_bar import StepTimesBar
 
 LEFT_WIDTH_PX = 268
 
@@ -168,6 +169,10 @@ class MainScreen(Screen):
         cycle_layout.addWidget(self.remaining_label, 1, 2)
         cycle_layout.addWidget(self.load_button, 0, 3, 2, 1)
         cycle_layout.addWidget(self.progress, 2, 0, 1, 4)
+        self.step_times_caption = styled_label("", "caption")
+        self.step_times_bar = StepTimesBar()
+        cycle_layout.addWidget(self.step_times_caption, 3, 0, 1, 4)
+        cycle_layout.addWidget(self.step_times_bar, 4, 0, 1, 4)
         cycle_layout.setColumnStretch(0, 1)
 
         self.io_strip = IoStrip()
@@ -225,6 +230,7 @@ class MainScreen(Screen):
         self.remaining_caption.setText(self.tr("Remaining"))
         self.io_strip.button.setToolTip(self.tr("All inputs and outputs"))
         self.io_strip.retranslate()
+        self.step_times_caption.setText(self.tr("Last cycle by step"))
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
         self._show_recipe_number()
@@ -364,6 +370,7 @@ class MainScreen(Screen):
             format_duration(snapshot.last_cycle_time_s) if snapshot.last_cycle_time_s else "—"
         )
 
+        self.step_times_bar.set_step_times(snapshot.last_step_times_s)
         cycle = snapshot.cycle
         if cycle.finished_board_on_table:
             set_text(self.step_label, self.tr("Take the finished board off"))
@@ -386,6 +393,7 @@ class MainScreen(Screen):
         self.left_widget.setFixedWidth(round(LEFT_WIDTH_PX * scale))
         self.plan_view.set_scale(scale)
         self.io_strip.set_lamp_diameter(round(IO_LAMP_PX * scale))
+        self.step_times_bar.set_scale(scale)
 
     def _enable(self, button: QPushButton, command: str) -> None:
         reason = refusal(self.snapshot, command)

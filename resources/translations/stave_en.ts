@@ -1090,7 +1090,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+199" />
+        <location filename="../../app/screens/main_screen.py" line="+204" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -1191,7 +1191,12 @@ shift</translation>
         <translation>All inputs and outputs</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
+        <source>Last cycle by step</source>
+        <translation>Last cycle by step</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>NOT HOMED</source>
         <translation>NOT HOMED</translation>
     </message>
@@ -1246,7 +1251,7 @@ shift</translation>
         <translation>No. %1</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+58" />
         <source>Take the finished board off</source>
         <translation>Take the finished board off</translation>
     </message>
@@ -2010,18 +2015,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+547" />
+        <location line="+556" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-546" />
-        <location line="+596" />
+        <location line="-555" />
+        <location line="+605" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-595" />
+        <location line="-604" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -2032,12 +2037,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+119" />
+        <location line="+128" />
         <source>Discard</source>
         <translation>Discard</translation>
     </message>
     <message>
-        <location line="-118" />
+        <location line="-127" />
         <source>Use on machine</source>
         <translation>Use on machine</translation>
     </message>
@@ -2058,12 +2063,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+357" />
+        <location line="+366" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-356" />
+        <location line="-365" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -2093,7 +2098,7 @@ shift</translation>
         <translation>cuts no board here</translation>
     </message>
     <message>
-        <location line="+53" />
+        <location line="+62" />
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
@@ -2416,9 +2421,72 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>StepTimes</name>
+    <message>
+        <location filename="../../app/screens/widgets/step_times_bar.py" line="+22" />
+        <source>Waiting</source>
+        <translation>Waiting</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centering</source>
+        <translation>Centering</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Clamping</source>
+        <translation>Clamping</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Measuring</source>
+        <translation>Measuring</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Moving clear</source>
+        <translation>Moving clear</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Approach</source>
+        <translation>Approach</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Side A</source>
+        <translation>Side A</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Repositioning</source>
+        <translation>Repositioning</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Side B</source>
+        <translation>Side B</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Return</source>
+        <translation>Return</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Unclamping</source>
+        <translation>Unclamping</translation>
+    </message>
+</context>
+<context>
     <name>Steps</name>
     <message>
-        <location line="-47" />
+        <location filename="../../app/screens/texts.py" line="-47" />
         <source>Waiting for a board</source>
         <translation>Waiting for a board</translation>
     </message>

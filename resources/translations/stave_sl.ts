@@ -1090,7 +1090,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+199"/>
+        <location filename="../../app/screens/main_screen.py" line="+204"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -1191,7 +1191,12 @@ izmena</translation>
         <translation>Vsi vhodi in izhodi</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>Last cycle by step</source>
+        <translation>Zadnji cikel po korakih</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>NOT HOMED</source>
         <translation>NI REFERENCIRANO</translation>
     </message>
@@ -1246,7 +1251,7 @@ izmena</translation>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>Take the finished board off</source>
         <translation>Odstranite obdelano desko</translation>
     </message>
@@ -2010,18 +2015,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+547"/>
+        <location line="+556"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-546"/>
-        <location line="+596"/>
+        <location line="-555"/>
+        <location line="+605"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-595"/>
+        <location line="-604"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -2032,12 +2037,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+119"/>
+        <location line="+128"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-127"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
@@ -2058,12 +2063,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+357"/>
+        <location line="+366"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-356"/>
+        <location line="-365"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -2093,7 +2098,7 @@ izmena</translation>
         <translation>tu ne reže nobene deske</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+62"/>
         <source>Unsaved changes</source>
         <translation>Neshranjene spremembe</translation>
     </message>
@@ -2416,9 +2421,72 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>StepTimes</name>
+    <message>
+        <location filename="../../app/screens/widgets/step_times_bar.py" line="+22"/>
+        <source>Waiting</source>
+        <translation>Čakanje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Centering</source>
+        <translation>Centriranje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clamping</source>
+        <translation>Vpenjanje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measuring</source>
+        <translation>Merjenje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spindle</source>
+        <translation>Vreteno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moving clear</source>
+        <translation>Umik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Approach</source>
+        <translation>Približevanje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side A</source>
+        <translation>Stran A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Repositioning</source>
+        <translation>Prestavljanje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side B</source>
+        <translation>Stran B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return</source>
+        <translation>Vrnitev</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unclamping</source>
+        <translation>Odpenjanje</translation>
+    </message>
+</context>
+<context>
     <name>Steps</name>
     <message>
-        <location line="-47"/>
+        <location filename="../../app/screens/texts.py" line="-47"/>
         <source>Waiting for a board</source>
         <translation>Čakam na desko</translation>
     </message>

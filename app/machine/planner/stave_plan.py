@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -245,6 +246,14 @@ class StavePlan(ChunkedTrajectory):
                 if t is not None:
                     times.append(planned.t_start_s + float(t))
         return tuple(sorted(times))
+
+
+def from_first_cut(toolpath: ToolPath) -> ToolPath:
+    """The tool path from its first cutting segment on, the travel from home before it left
+    out. Why: a stave planned from anywhere but home (the previous board's side B end) then
+    approaches the lead-in directly, around the keep-out, instead of through home."""
+    first = next((i for i, s in enumerate(toolpath.segments) if s.cutting), 0)
+    return replace(toolpath, segments=toolpath.segments[first:])
 
 
 def plan_stave(

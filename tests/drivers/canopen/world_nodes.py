@@ -200,6 +200,8 @@ class WorldIo(SimIoNode):
         return super().on_read(index, subindex)
 
     def on_write(self, index: int, subindex: int, value: object) -> None:
+        if not self.bus.world.link_ok(self.link):
+            return  # a cut link delivers nothing: a late refresh must not switch outputs on
         super().on_write(index, subindex, value)
         if index == obj.WRITE_OUTPUT_8BIT and subindex >= 1:
             image = OutputImage(
