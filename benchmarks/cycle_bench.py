@@ -34,11 +34,10 @@ from app.data.recipe import Recipe  # noqa: E402
 from app.drivers.sim.settings import parse_gauge_settings  # noqa: E402
 from app.geometry.width_range import cuttable_widths  # noqa: E402
 from app.machine import commands as cmd  # noqa: E402
-from app.machine.cycle_floor import approach_from_side_b_s, cycle_floor  # noqa: E402
-from app.machine.cycle_times import TimedStep  # noqa: E402
+from app.machine.cycle_floor import cycle_floor  # noqa: E402
 from app.machine.process_params import motion_limits, stave_limits  # noqa: E402
 from app.machine.runtime import MachineRuntime  # noqa: E402
-from app.machine.states import MachineState  # noqa: E402
+from app.machine.states import MachineState, TimedStep  # noqa: E402
 
 ORIGINAL_MACHINE_S = 90.0
 BOARD_WIDTH_MM = 150.0
@@ -87,14 +86,7 @@ def measure_case(runtime: MachineRuntime, recipe: Recipe, measure_s: float) -> d
     assert cycle.planned is not None
     plan = cycle.planned.plan
     limits = motion_limits(c.config, c.params)
-    floor = cycle_floor(
-        plan,
-        limits,
-        c.config.io,
-        c.config.cycle,
-        measure_s,
-        approach_from_side_b_s(plan, limits),
-    )
+    floor = cycle_floor(plan, limits, c.config.io, c.config.cycle, measure_s)
     return {
         "case": recipe.name,
         "length_mm": recipe.length_mm,

@@ -54,6 +54,7 @@ from app.geometry.curved_profile import ProfileSpec  # noqa: E402
 from app.geometry.profile import solve_profile  # noqa: E402
 from app.geometry.profile_kinds import ProfileKind  # noqa: E402
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath  # noqa: E402
+from app.machine.cycle_floor import jerk_limited_cut_s  # noqa: E402
 from app.machine.executor import ExecutorOutput, PathExecutor  # noqa: E402
 from app.machine.planner.chunk import path_box  # noqa: E402
 from app.machine.planner.keepout import TableKeepOut  # noqa: E402
@@ -185,17 +186,13 @@ def cut_ratios(plan: StavePlan, limits: MotionLimits, side: str) -> tuple[float,
     """(planned / (L/f + f/a), planned / jerk-limited bound) for one side."""
     path = plan.cut_path(side)
     feed = limits.feed_mm_s
-    accel = 0.0
-    jerk = 0.0
-    for piece in path.pieces:
-        box = path_box(piece.bounds(), limits.x, limits.y, math.inf, math.inf)
-        accel = max(accel, box.acceleration)
-        jerk = max(jerk, box.jerk)
-    length = path.length_mm
+    accel = max(
+        path_box(piece.bounds(), limits.x, limits.y, math.inf, math.inf).acceleration
+        for piece in path.pieces
+    )
     planned = plan.cut_time_s(side)
-    bound = length / feed + feed / accel
-    ramp_s = 2.0 * math.sqrt(feed / jerk) if feed < accel**2 / jerk else feed / accel + accel / jerk
-    return planned / bound, planned / (length / feed + ramp_s)
+    bound = path.length_mm / feed + feed / accel
+    return planned / bound, planned / jerk_limited_cut_s(path, limits)
 
 
 def chord_distances(plan: StavePlan, xy: np.ndarray) -> np.ndarray:

@@ -23,12 +23,12 @@ from app.drivers.contracts import CommunicationError, InputImage, OutputImage, W
 from app.machine.alarms import AlarmCode
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
-from app.machine.cycle_times import StepClock, TimedStep, timed_step
+from app.machine.cycle_times import StepClock, timed_step
 from app.machine.executor import ExecutorOutput, PathExecutor
 from app.machine.planner.continuation import Continuation
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.planner.trajectory import Phase
-from app.machine.states import CycleStep
+from app.machine.states import CycleStep, TimedStep
 
 PlanJob = Callable[[], Any]
 PlanSubmitter = Callable[[PlanJob], "concurrent.futures.Future[Any]"]

@@ -102,11 +102,13 @@ def cycle_floor(
     io: IOConfig,
     cycle: CycleConfig,
     measure_s: float,
-    approach_s: float,
+    approach_s: float | None = None,
 ) -> CycleFloor:
-    """The floor of a cycle whose cut is ``plan``, approached in ``approach_s`` at best, on a
-    machine with the I/O strokes ``io``, the overlaps ``cycle`` allows, and a gauge that
-    reads in ``measure_s``."""
+    """The floor of a cycle whose cut is ``plan``, approached in ``approach_s`` at best (by
+    default from the end of the previous board's side B), on a machine with the I/O strokes
+    ``io``, the overlaps ``cycle`` allows, and a gauge that reads in ``measure_s``."""
+    if approach_s is None:
+        approach_s = approach_from_side_b_s(plan, limits)
     if cycle.centering_retract_while_clamping:
         retract_after_clamped_s = max(io.centering_time_s - io.clamp_time_s, 0.0)
     else:

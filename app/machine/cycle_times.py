@@ -6,34 +6,15 @@ needs the approach apart from the cut, and the waits (for a board, for the axes 
 apart from the motion. Each period of the cycle is booked to exactly one timed step, so the
 step times add up to the cycle time.
 
-The names are stable text: they are the keys of ``step_times_s`` in ``stave simulate --json``
-and of the step times kept with each production record.
+The steps (:class:`~app.machine.states.TimedStep`) live beside the cycle steps, a vocabulary
+the screens may use too. The names are stable text: they are the keys of ``step_times_s`` in
+``stave simulate --json`` and of the step times kept with each production record.
 """
 
 from __future__ import annotations
 
-import enum
-
 from app.machine.planner.trajectory import Phase
-from app.machine.states import CycleStep
-
-
-class TimedStep(enum.Enum):
-    """The steps a cycle's time is split into (in the order they normally come)."""
-
-    WAITING = "waiting"
-    CENTERING = "centering"
-    CLAMPING = "clamping"
-    MEASURING = "measuring"
-    SPINDLE = "spindle"
-    RETRACTING = "retracting"
-    APPROACH = "approach"
-    SIDE_A = "side_a"
-    REPOSITIONING = "repositioning"
-    SIDE_B = "side_b"
-    RETURN = "return"
-    UNCLAMPING = "unclamping"
-
+from app.machine.states import CycleStep, TimedStep
 
 _BY_CYCLE_STEP: dict[CycleStep, TimedStep] = {
     CycleStep.WAIT_FOR_PART: TimedStep.WAITING,

@@ -62,6 +62,25 @@ class CycleStep(enum.Enum):
     UNCLAMPING = "unclamping"
 
 
+class TimedStep(enum.Enum):
+    """The steps a cycle's time is split into (in the order they normally come): finer than
+    CycleStep, the approach apart from side A and the waits apart (``app.machine.cycle_times``
+    books every period to one of them)."""
+
+    WAITING = "waiting"
+    CENTERING = "centering"
+    CLAMPING = "clamping"
+    MEASURING = "measuring"
+    SPINDLE = "spindle"
+    RETRACTING = "retracting"
+    APPROACH = "approach"
+    SIDE_A = "side_a"
+    REPOSITIONING = "repositioning"
+    SIDE_B = "side_b"
+    RETURN = "return"
+    UNCLAMPING = "unclamping"
+
+
 class Mode(enum.Enum):
     AUTOMATIC = "automatic"
     MANUAL = "manual"

@@ -43,7 +43,10 @@ def test_full_cycle_counts_and_records_the_piece(ready_rig: Rig, tmp_path) -> No
 
     rig.until(done, 200.0)
     assert rig.controller.pieces_total == 1 and rig.controller.pieces_shift == 1
-    assert set(CycleStep) - {CycleStep.WAIT_FOR_PART, CycleStep.RETRACTING} <= seen
+    # No return home: the next board's approach starts where side B ended.
+    returning = CycleStep.RETURNING
+    assert set(CycleStep) - {CycleStep.WAIT_FOR_PART, CycleStep.RETRACTING, returning} <= seen
+    assert returning not in seen
     assert not rig.world.outputs.spindle_on and not rig.world.outputs.clamps_close
     last = rig.controller.finished_cycles[-1][0]
     assert last.result == "ok" and 140 < last.width_mm < 160

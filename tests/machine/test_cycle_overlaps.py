@@ -12,7 +12,7 @@ import pytest
 from app.config import ConfigError, MachineConfig, load_config, parse_config
 from app.drivers.sim.settings import parse_gauge_settings
 from app.machine import commands as cmd
-from app.machine.cycle_floor import approach_from_side_b_s, cycle_floor, jerk_limited_cut_s
+from app.machine.cycle_floor import cycle_floor, jerk_limited_cut_s
 from app.machine.planner.keepout import TableKeepOut
 from app.machine.planner.trajectory import Phase
 from app.machine.process_params import motion_limits
@@ -90,14 +90,8 @@ def test_two_boards_overlapped_stay_off_the_board_and_within_5_percent_of_the_fl
         steps = piece.step_times_s
         assert "return" not in steps and steps["spindle"] < 0.05  # centering already back
         limits = motion_limits(c.config, c.params)
-        floor = cycle_floor(
-            plan,
-            limits,
-            c.config.io,
-            c.config.cycle,
-            parse_gauge_settings({}).measurement_time_s,
-            approach_from_side_b_s(plan, limits),
-        )
+        measure_s = parse_gauge_settings({}).measurement_time_s
+        floor = cycle_floor(plan, limits, c.config.io, c.config.cycle, measure_s)
         assert floor.total_s <= piece.cycle_time_s <= 1.05 * floor.total_s
         # The cuts are at the jerk-limited optimum (the planner's own figure).
         assert steps["side_a"] == pytest.approx(floor.parts_s["side_a"], rel=1e-3)

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from app.machine.cycle_times import StepClock, TimedStep, timed_step
+from app.machine.cycle_times import StepClock, timed_step
 from app.machine.planner.trajectory import Phase
-from app.machine.states import CycleStep
+from app.machine.states import CycleStep, TimedStep
 
 
 @pytest.mark.parametrize(

@@ -69,6 +69,11 @@ def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, ta
     assert main.total_tile.value_label.text() == str(before.pieces_total + 1)
     assert main.width_tile.value_label.text().endswith("mm")
     assert ":" in main.cycle_time_tile.value_label.text()
+    # The bar shows the machine's step times of that cycle, as the snapshot brought them.
+    qtbot.waitUntil(lambda: main.step_times_bar.steps != (), timeout=5000)
+    shown = dict(main.step_times_bar.steps)
+    assert shown == {k: v for k, v in window.poller.snapshot.last_step_times_s if v > 0}
+    assert shown["side_a"] > 0 and "Side A" in main.step_times_bar.toolTip()
 
     # The finished board is still on the table: the next Start asks for it to be taken off,
     # and the simulated operator's hands replace it.

@@ -12,7 +12,7 @@ from PySide6.QtCore import QCoreApplication, QRectF, QSize, Qt
 from PySide6.QtGui import QColor, QPainter, QPaintEvent, QPen
 from PySide6.QtWidgets import QSizePolicy, QWidget
 
-from app.machine.cycle_times import TimedStep
+from app.machine.states import TimedStep
 from app.screens import theme
 from app.screens.texts import QT_TRANSLATE_NOOP
 
