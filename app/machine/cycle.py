@@ -136,7 +136,7 @@ class AutomaticCycle:
         self._spindle_on_s: float | None = None
         self._waiting_since_s: float | None = None
         self._keep_out: TableKeepOut | None = None
-        self._entered_side_b = False
+        self._entered_last_cut = False
         self._clamps_released = False
         self._spindle_ran = False  # the spindle has reported running since it was switched on
 
@@ -381,15 +381,17 @@ class AutomaticCycle:
 
     def _clear_of_board(self, out: ExecutorOutput, axes: AxisGroup) -> bool:
         """True once the cutter has left the board for good: on the return, or out of the
-        board's keep-out again after side B entered it (measured at the actual position)."""
+        board's keep-out again after the plan's last cut (side B's last pass) entered it,
+        measured at the actual position. Not between two passes: another cut follows."""
         if out.phase is Phase.RETURN:
             return True
-        if out.phase is not Phase.CUT_B or self._keep_out is None:
+        executor = self.executor
+        if executor is None or not executor.in_last_cut or self._keep_out is None:
             return False
         inside = self._keep_out.inside(axes.positions())
         if inside:
-            self._entered_side_b = True
-        return self._entered_side_b and not inside
+            self._entered_last_cut = True
+        return self._entered_last_cut and not inside
 
     def _request_width(self) -> None:
         try:

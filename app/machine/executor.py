@@ -105,6 +105,8 @@ class PathExecutor:
         self._period_s = float(period_s)
         self._count = _chunks_before(trajectory, end_before)
         self._gates = _cut_entries(trajectory, self._count) if wait_before_cuts else frozenset()
+        cuts = [i for i, c in enumerate(trajectory.chunks[: self._count]) if c.chunk.cutting]
+        self._last_cut = cuts[-1] if cuts else 0
         self._index = 0
         self._segment: RuckigTrajectory = trajectory.chunks[0].trajectory
         self._t_local = 0.0
@@ -160,6 +162,11 @@ class PathExecutor:
         if self._state is ExecutorState.WAITING:
             return True
         return self._state is ExecutorState.RUNNING and self._chunk.chunk.dwell_s > 0.0
+
+    @property
+    def in_last_cut(self) -> bool:
+        """True from the first period of the plan's last cutting chunk on: no cut follows."""
+        return self._index >= self._last_cut
 
     @property
     def waiting(self) -> bool:

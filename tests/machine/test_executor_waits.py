@@ -2,11 +2,16 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
+from app.geometry.profile import solve_profile
+from app.geometry.toolpath import build_toolpath
 from app.machine.executor import ExecutorState, PathExecutor
+from app.machine.planner.stave_plan import plan_stave
 from app.machine.planner.trajectory import Phase
-from tests.machine.planner.support import PERIOD_S, plan
+from tests.machine.planner.support import HOME, LIMITS, PERIOD_S, params, plan
 
 PLAN = plan()
 
@@ -68,3 +73,24 @@ def test_without_waits_the_stream_is_the_plan_and_it_can_end_before_the_return()
     side_b_end = [c.chunk.end_xyz() for c in PLAN.chunks if c.chunk.phase is Phase.CUT_B][-1]
     end = short.last_output
     assert (end.x, end.y, end.z) == pytest.approx(side_b_end)
+
+
+def test_with_two_passes_only_the_second_pass_of_side_b_is_the_last_cut() -> None:
+    """The clamps may open once the cutter leaves the board in the last cut, never between
+    two passes: the executor says when no cut follows."""
+    profile = solve_profile(1000.0, 150.0, 0.25, 0.75)
+    path = build_toolpath(profile, replace(params(), roughing_allowances_mm=(10.0,)))
+    executor = PathExecutor(plan_stave(path, HOME, LIMITS), PERIOD_S, wait_before_cuts=True)
+    last_flags: list[bool] = []
+    cutting_b_runs = 0
+    was_cutting_b = False
+    while not executor.done:
+        if executor.waiting:
+            executor.release()
+        out = executor.step()
+        cutting_b = out.cutting and out.phase is Phase.CUT_B
+        if cutting_b and not was_cutting_b:
+            cutting_b_runs += 1
+            last_flags.append(executor.in_last_cut)
+        was_cutting_b = cutting_b
+    assert cutting_b_runs == 2 and last_flags == [False, True]
