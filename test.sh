@@ -6,7 +6,8 @@ cd "$(dirname "$0")"
 scripts/ensure-env.sh dev
 export QT_QPA_PLATFORM=offscreen
 status=0
-.venv/bin/python -m pytest -p no:cacheprovider "$@" || status=$?
+# One worker per core; a test file stays on one worker (its module fixtures start once).
+.venv/bin/python -m pytest -p no:cacheprovider -n auto --dist loadfile "$@" || status=$?
 echo "== ruff" && { .venv/bin/ruff check app tests benchmarks || status=1; }
 echo "== ruff format" && { .venv/bin/ruff format --check app tests benchmarks || status=1; }
 echo "== mypy (strict, whole app)" && { .venv/bin/mypy || status=1; }

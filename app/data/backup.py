@@ -8,7 +8,9 @@ complete and checked; it is one self-contained file (journal mode DELETE, no -wa
 with a SHA-256 checksum beside it (``<backup>.sha256``, the format ``sha256sum -c`` reads).
 
 Restore is a service operation and changes nothing until the candidate has passed every
-check, in this order: the checksum; the file opened read-only (SQLite header, integrity,
+check, in this order: the checksum; the file's length against the page count its SQLite
+header records (a cut-off copy whose missing pages happened to be free ones passes SQLite's
+own integrity check); the file opened read-only (SQLite header, integrity,
 foreign keys, a known schema version); a private copy made of it and checked against the
 exact schema of its version (tables, columns, constraints, indexes; no trigger or view of its
 own, which would run inside the application); the copy migrated to the current version; every
@@ -43,6 +45,7 @@ from app.data.users import Role
 from app.geometry.limits import StaveLimits
 
 _SQLITE_HEADER = b"SQLite format 3\x00"
+_HEADER_BYTES = 100
 CHECKSUM_SUFFIX = ".sha256"
 MAX_BACKUP_BYTES = 2 * 1024**3
 """A backup larger than this is refused before it is read (the panel's database is megabytes)."""
@@ -171,6 +174,28 @@ def _check_checksum(path: Path) -> None:
         raise BackupError(f"{path}: content does not match its checksum {sums.name}: not restored")
 
 
+def _check_length(path: Path, header: bytes) -> None:
+    """The file holds exactly the pages its header counts (file format section 1.3: the page
+    size at offset 16, 1 meaning 65536; the page count at 28, valid while the number at 92
+    equals the change counter at 24, as in every file SQLite's backup API writes)."""
+    size = path.stat().st_size
+    if len(header) < _HEADER_BYTES:
+        raise BackupError(f"{path}: {size} bytes is shorter than an SQLite header")
+    page_size = int.from_bytes(header[16:18], "big")
+    page_size = 65536 if page_size == 1 else page_size
+    pages = int.from_bytes(header[28:32], "big")
+    counted = header[24:28] == header[92:96] and pages > 0
+    if page_size < 512 or page_size & (page_size - 1):
+        raise BackupError(f"{path}: page size {page_size} in its header is not a power of two")
+    if counted and size != pages * page_size:
+        raise BackupError(
+            f"{path}: {size} bytes, but its header counts {pages} pages of {page_size} bytes "
+            f"({pages * page_size} bytes): the file is cut off or extended, not restored"
+        )
+    if not counted and size % page_size:
+        raise BackupError(f"{path}: {size} bytes is not a whole number of {page_size}-byte pages")
+
+
 def inspect_backup(path: Path) -> BackupInfo:
     """Check that ``path`` is a healthy database file of a known schema version, opened
     read-only; BackupError if not. (Restore checks much more, on a copy.)"""
@@ -181,8 +206,10 @@ def inspect_backup(path: Path) -> BackupInfo:
             f"{path}: {path.stat().st_size} bytes is too large: at most {MAX_BACKUP_BYTES}"
         )
     with path.open("rb") as stream:
-        if stream.read(len(_SQLITE_HEADER)) != _SQLITE_HEADER:
-            raise BackupError(f"{path}: not an SQLite database file")
+        header = stream.read(_HEADER_BYTES)
+    if header[: len(_SQLITE_HEADER)] != _SQLITE_HEADER:
+        raise BackupError(f"{path}: not an SQLite database file")
+    _check_length(path, header)
     try:
         with closing(_connect_existing(path, read_only=True)) as conn:
             problems = [str(row[0]) for row in conn.execute("PRAGMA integrity_check")]

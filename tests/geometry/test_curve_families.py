@@ -45,7 +45,13 @@ CASES = [
 ]
 
 
-@pytest.mark.parametrize(("kind", "values", "true_h"), CASES, ids=str)
+def case_id(case: tuple[ProfileKind, dict[str, float], object]) -> str:
+    """Stable across processes (no function addresses), so parallel workers collect alike."""
+    kind, values, _ = case
+    return "-".join([kind.value, *(f"{k}={v}" for k, v in values.items())])
+
+
+@pytest.mark.parametrize(("kind", "values", "true_h"), CASES, ids=[case_id(c) for c in CASES])
 def test_family_is_fitted_within_a_micrometre_and_tangent_continuous(kind, values, true_h):
     profile = solve_side_profile(kind, L, W, K, family_values=values)
     assert isinstance(profile, CurvedProfile)

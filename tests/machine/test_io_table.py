@@ -7,17 +7,18 @@ from dataclasses import fields
 from pathlib import Path
 
 from app.config import load_config
-from app.drivers.contracts import InputImage, OutputImage
+from app.drivers.contracts import DIGITAL_INPUTS, OutputImage
 from app.machine.io_table import io_table
 
 RESOURCES = Path(__file__).resolve().parents[2] / "resources"
-SIGNALS = [f.name for f in fields(InputImage)] + [f.name for f in fields(OutputImage)]
+# Terminal bits only: the handwheel's counter and the joystick's analog values are registers.
+SIGNALS = [*DIGITAL_INPUTS, *(f.name for f in fields(OutputImage))]
 
 
 def _by_signal(config_path: Path) -> dict[str, str]:
     table = io_table(load_config(config_path))
     assert [p.signal for p in table] == SIGNALS
-    assert [p.output for p in table] == [False] * 11 + [True] * 6
+    assert [p.output for p in table] == [False] * len(DIGITAL_INPUTS) + [True] * 6
     return {p.signal: p.address for p in table}
 
 
