@@ -203,9 +203,11 @@ def run_plant(machines: int, seconds: float) -> None:
         assert recipe is not None and recipe.id is not None
         for link in links:
             link.send(cmd.SelectRecipe(recipe.id))
-        # Production stops 8 s before the client leaves: the last records reach the
-        # database and the servers in that time.
-        end = time.monotonic() + seconds - 8.0
+        # Nothing new is started in the last minute (longer than a cycle), and the machines
+        # and their servers keep running until the client leaves: every stave started is
+        # finished, recorded and published while the client listens.
+        end = time.monotonic() + seconds - 1.0
+        production_end = end - 60.0
         last = time.monotonic()
         while time.monotonic() < end:
             now = time.monotonic()
@@ -218,7 +220,7 @@ def run_plant(machines: int, seconds: float) -> None:
                 if state != last_state[index]:
                     last_state[index] = state
                     sent_states[index].append((state, snapshot.wall_time))
-                if ready_to_start(snapshot):
+                if now < production_end and ready_to_start(snapshot):
                     link.send(cmd.Start())
             last = now
             time.sleep(0.02)
