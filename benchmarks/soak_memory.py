@@ -5,11 +5,16 @@ cycles, plans, previews, lateness samples, records waiting for the database) mus
 This runs the machine process's own composition (``MachineRuntime`` with the threaded,
 journalled store and the planner on a worker thread, a snapshot and the plan preview taken
 as the process publishes them) on the simulated machine with a simulated clock, as fast as it
-goes, and prints the resident set size after every block of cycles, and the growth per cycle
-between the second block and the last (the first block includes start-up allocations).
+goes, and prints the resident set size after every block of cycles with the growth per
+cycle since the block before, and at the end the growth per cycle between the first block and
+the last (the first block includes start-up allocations).
 
-Run: ``.venv/bin/python benchmarks/soak_memory.py [--cycles 3000] [--every 1000]``
-(about 0.3 s per cycle on the 2-core machine).
+``--trace-frames N`` also starts tracemalloc (N frames per allocation) and, at the end, prints
+the allocation sites that grew most between the first block and the last: where the memory
+goes, not only how much (tracemalloc slows the run about threefold).
+
+Run: ``.venv/bin/python benchmarks/soak_memory.py [--cycles 3000] [--every 1000]
+[--trace-frames 6]`` (about 0.3 s per cycle on the 2-core machine).
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ import argparse
 import concurrent.futures
 import gc
 import tempfile
+import tracemalloc
 from pathlib import Path
 
 from app.config import load_config
@@ -26,6 +32,7 @@ from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState
 
 PUBLISH_EVERY_S = 0.02  # the machine process publishes a snapshot at 50 Hz
+TOP_SITES = 12  # allocation sites printed with --trace-frames
 
 
 def rss_kib() -> int:
@@ -36,8 +43,28 @@ def rss_kib() -> int:
     return 0
 
 
-def soak(cycles: int, every: int) -> list[tuple[int, int]]:
+def per_cycle_kib(before: tuple[int, int], after: tuple[int, int]) -> float:
+    """RSS growth per cycle between two (cycles done, RSS KiB) figures."""
+    return (after[1] - before[1]) / (after[0] - before[0])
+
+
+def print_grown_sites(first: tracemalloc.Snapshot, last: tracemalloc.Snapshot, cycles: int) -> None:
+    """The allocation sites that grew most between two snapshots, per cycle."""
+    ignore = [tracemalloc.Filter(False, tracemalloc.__file__)]
+    diff = last.filter_traces(ignore).compare_to(first.filter_traces(ignore), "traceback")
+    total = sum(d.size_diff for d in diff)
+    print(f"traced growth {total / 1024:.1f} KiB = {total / 1024 / cycles:.3f} KiB per cycle")
+    for stat in diff[:TOP_SITES]:
+        print(f"{stat.size_diff / 1024 / cycles:+8.3f} KiB/cycle {stat.count_diff:+6d} blocks")
+        for line in stat.traceback.format():
+            print(f"    {line}")
+
+
+def soak(cycles: int, every: int, trace_frames: int = 0) -> list[tuple[int, int]]:
     """(cycles done, RSS KiB) after each block."""
+    if trace_frames:
+        tracemalloc.start(trace_frames)
+    snapshots: list[tracemalloc.Snapshot] = []
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="planner")
     with tempfile.TemporaryDirectory() as tmp:
         runtime = MachineRuntime.create(
@@ -78,9 +105,18 @@ def soak(cycles: int, every: int) -> list[tuple[int, int]]:
             if done % every == 0:
                 gc.collect()
                 figures.append((done, rss_kib()))
-                print(f"{done:6d} cycles  RSS {figures[-1][1] / 1024:8.1f} MiB", flush=True)
+                growth = (
+                    f"  {per_cycle_kib(figures[-2], figures[-1]):+8.3f} KiB per cycle"
+                    if len(figures) > 1
+                    else ""
+                )
+                print(f"{done:6d} cycles  RSS {figures[-1][1] / 1024:8.1f} MiB{growth}", flush=True)
+                if trace_frames:
+                    snapshots.append(tracemalloc.take_snapshot())
         runtime.shutdown()
     pool.shutdown()
+    if len(snapshots) > 1:
+        print_grown_sites(snapshots[0], snapshots[-1], figures[-1][0] - figures[0][0])
     return figures
 
 
@@ -88,11 +124,12 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cycles", type=int, default=3000)
     parser.add_argument("--every", type=int, default=1000)
+    parser.add_argument("--trace-frames", type=int, default=0)
     args = parser.parse_args()
-    figures = soak(args.cycles, args.every)
-    if len(figures) >= 3:
-        (n0, r0), (n1, r1) = figures[1], figures[-1]
-        print(f"growth after warm-up: {(r1 - r0) / (n1 - n0):.3f} KiB per cycle")
+    figures = soak(args.cycles, args.every, args.trace_frames)
+    if len(figures) >= 2:
+        growth = per_cycle_kib(figures[0], figures[-1])
+        print(f"growth after the first block: {growth:.3f} KiB per cycle")
 
 
 if __name__ == "__main__":
