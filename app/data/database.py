@@ -138,6 +138,11 @@ SIMULATION_APPLICATION_ID = 0x53494D55
 in the file itself, so a copy keeps it, and no table or migration is needed for it."""
 
 SYSTEM_USER = "system"
+PAGE_CACHE_KIB = 2048
+"""SQLite's page cache per connection, set explicitly: the machine process runs for months and
+its database grows by every board, so the cache fills with the file's pages up to this bound
+and then stays there (a soak run's RSS growth per cycle is this cache filling, not Python
+objects, which stay flat)."""
 """Name logged for changes the software makes by itself (defaults of a new database)."""
 
 _RECIPE_COLUMNS = (
@@ -248,6 +253,7 @@ class Database:
                 )
             connection.execute("PRAGMA synchronous = FULL")
             connection.execute("PRAGMA foreign_keys = ON")
+            connection.execute(f"PRAGMA cache_size = -{PAGE_CACHE_KIB}")  # negative: KiB
             database = cls(
                 connection,
                 db_path,

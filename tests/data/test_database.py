@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from app.data.database import Database, default_database_path
+from app.data.database import PAGE_CACHE_KIB, Database, default_database_path
 from app.data.errors import (
     DatabaseOpenError,
     NotFoundError,
@@ -89,6 +89,8 @@ def test_the_connection_is_wal_synchronous_full_with_foreign_keys(db_path: Path)
         assert conn.execute("PRAGMA journal_mode").fetchone()[0] == "wal"
         assert conn.execute("PRAGMA synchronous").fetchone()[0] == 2  # FULL
         assert conn.execute("PRAGMA foreign_keys").fetchone()[0] == 1
+        # the page cache, the one memory that grows with the file, is bounded
+        assert conn.execute("PRAGMA cache_size").fetchone()[0] == -PAGE_CACHE_KIB
 
 
 def test_reopening_adds_nothing(db_path: Path) -> None:
