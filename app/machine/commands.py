@@ -86,6 +86,16 @@ class JogStep:
 
 
 @dataclass(frozen=True)
+class MoveTo:
+    """Manual mode: go to this position (X, Y in mm, the tilt in degrees), around the board on
+    the table, or refused with the reason; Stop or JogRelease end it where it is."""
+
+    x_mm: float
+    y_mm: float
+    z_deg: float
+
+
+@dataclass(frozen=True)
 class JogRelease:
     """The jog button was released: decelerate to standstill now."""
 
@@ -223,6 +233,7 @@ Command = (
     | LeaveManual
     | JogContinuous
     | JogStep
+    | MoveTo
     | JogRelease
     | SetClamps
     | SetSpindle

@@ -44,6 +44,7 @@ from app.machine.executor import PathExecutor
 from app.machine.homing import HomingFailed, HomingSequence
 from app.machine.homing_clearance import homing_clearance
 from app.machine.io_table import io_table
+from app.machine.manual_move import ManualMove
 from app.machine.pendant.jog_sources import PendantJog
 from app.machine.permissions import may, may_start_spindle
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
@@ -83,6 +84,7 @@ class MachineController(CycleControl):
         super().__init__(config, backend, gauge, store, wall_clock, submit)
         self.plans = PlanPublisher()
         self.sim_tools = SimulationTools(backend)
+        self.manual_move = ManualMove(config.axes, config.period_s)
         self.pendant_jog = PendantJog(config, pendant)
         self.user = ""
         self.io_points = io_table(config)
@@ -145,6 +147,9 @@ class MachineController(CycleControl):
                 self._transition(Event.ENTER_MANUAL)
             case cmd.LeaveManual():
                 self.manual.release_all()
+                if self.manual_move.running:  # its setpoints end here: stop the drives now
+                    self.manual_move.abandon()
+                    self.axes.quick_stop_all()
                 self.homing = None
                 self.mode = Mode.AUTOMATIC
                 self.outputs = replace(self.outputs, spindle_on=False)
@@ -155,8 +160,11 @@ class MachineController(CycleControl):
             case cmd.JogStep(axis=axis, step=step):
                 if not self._refuse_busy_jog():
                     self._refuse(self.manual.step(axis, step, self.axes))
+            case cmd.MoveTo(x_mm=x, y_mm=y, z_deg=z):
+                self._move_to((x, y, z))
             case cmd.JogRelease(axis=axis):
                 self.manual.release(axis)
+                self.manual_move.stop()
             case cmd.SetClamps(closed=closed):
                 self.outputs = replace(self.outputs, clamps_close=closed)
             case cmd.SetSpindle(on=on):
@@ -191,8 +199,22 @@ class MachineController(CycleControl):
             case _:
                 assert_never(command)
 
+    def _move_to(self, target: tuple[float, float, float]) -> None:
+        if self._refuse_busy_jog():
+            return
+        if not self.manual.at_rest or self.manual_move.running:
+            self._refuse(Refusal(Reason.MOVE_RUNNING))
+            return
+        where = (self.manual.position("X"), self.manual.position("Y"), self.manual.position("Z"))
+        limits = motion_limits(self.config, self.params)
+        self._refuse(self.manual_move.start(where, target, self._board_keep_out(), limits))
+
     def _refuse_busy_jog(self) -> bool:
-        """The screen may jog only while no other control owns the jog."""
+        """The screen may jog only while no other control owns the jog (nor a move to a
+        typed position)."""
+        if self.manual_move.running:
+            self._refuse(Refusal(Reason.MOVE_RUNNING))
+            return True
         busy = self.pendant_jog.touch_screen()
         self._refuse(busy)
         return busy is not None
@@ -247,6 +269,7 @@ class MachineController(CycleControl):
         self._last_stop_s = self.now_s
         if self.state is MachineState.MANUAL:
             self.manual.release_all()
+            self.manual_move.stop()
             return
         if self.state is MachineState.STOPPING:
             return
@@ -364,6 +387,9 @@ class MachineController(CycleControl):
                 self.homing.tick(self.now_s, self.axes)
                 if self.homing.done:
                     self.homing = None
+                    self.manual.sync(self.axes)
+            elif self.manual_move.running:
+                if self.manual_move.tick(self.axes):
                     self.manual.sync(self.axes)
             elif warning := self.manual.tick(self.now_s, self.config.period_s, self.axes):
                 self.alarms.raise_alarm(AlarmCode.JOG_NOT_REFRESHED, warning)

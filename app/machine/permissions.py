@@ -157,6 +157,13 @@ def may_jog(f: Facts) -> Verdict:
     return None if f.state is MachineState.MANUAL else _no(R.OPEN_MANUAL_TO_JOG)
 
 
+def may_move_to(f: Facts) -> Verdict:
+    """A typed position means nothing on an axis that does not know where it is."""
+    if reason := may_jog(f):
+        return reason
+    return None if f.all_homed else _no(R.NOT_HOMED)
+
+
 def may_spindle(f: Facts) -> Verdict:
     if reason := may_jog(f):
         return reason
@@ -212,6 +219,7 @@ RULES: dict[type[cmd.Command], Rule] = {
     cmd.LeaveManual: may_leave_manual,
     cmd.JogContinuous: may_jog,
     cmd.JogStep: may_jog,
+    cmd.MoveTo: may_move_to,
     cmd.JogRelease: always,
     cmd.SetClamps: may_jog,
     cmd.SetSpindle: may_spindle,

@@ -91,6 +91,9 @@ class Reason(enum.Enum):
     LIMIT_SWITCH_NEGATIVE = "%1- limit switch is active: jog %1 in the + direction only"
     STEP_OF_ZERO = "a step of 0 moves nothing"
     RELEASE_JOG_FIRST = "axis %1 is moving: release the jog first"
+    MOVE_OUTSIDE_TRAVEL = "go to position: %1 = %2 is not allowed: %3 to %4"
+    MOVE_REFUSED = "go to position refused: %1"
+    MOVE_RUNNING = "the axes are going to a position: wait, or press Stop"
     JOG_AT_BOARD = "jog %1 refused: the cutter is at the board's keep-out (a board is on the table)"
     JOG_STOPS_AT_BOARD = "jog %1 stops at %2, the edge of the board's keep-out"
     JOG_STEP_INTO_BOARD = (

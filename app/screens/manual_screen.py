@@ -34,6 +34,7 @@ from app.machine.commands import (
     JogRelease,
     JogStep,
     LeaveManual,
+    MoveTo,
     ReloadParameters,
     SetClamps,
     SetSpindle,
@@ -198,6 +199,9 @@ class ManualScreen(Screen):
         self.spindle_button.clicked.connect(self.toggle_spindle)
         actions.addWidget(self.clamps_button, 1, 0, 1, 2)
         actions.addWidget(self.spindle_button, 1, 2, 1, 2)
+        self.go_to_button = touch_button("goToPosition")
+        self.go_to_button.clicked.connect(self.go_to_position)
+        actions.addWidget(self.go_to_button, 2, 0, 1, 4)
 
         right = QVBoxLayout()
         right.setSpacing(8)
@@ -238,6 +242,7 @@ class ManualScreen(Screen):
         for axis in ("X", "Y", "Z"):
             self.home_buttons[axis].setText(axis)
             self.home_buttons[axis].setToolTip(self.tr("Home %1").replace("%1", axis))
+        self.go_to_button.setText(self.tr("Go to position…"))
         self.home_buttons[""].setText(self.tr("All"))
         self.home_buttons[""].setToolTip(self.tr("Home all axes"))
         for readout in (self.axis_x, self.axis_y, self.axis_z):
@@ -321,6 +326,42 @@ class ManualScreen(Screen):
             return (0.0, 0.0)
         return self.snapshot.jog_xy if group == "XY" else self.snapshot.jog_z
 
+    def go_to_position(self) -> None:
+        """X, Y and the tilt typed on the keypad, one after the other; the machine plans the
+        move around the board on the table, or says why not."""
+        if self.snapshot is None:
+            return
+        limits = self.context.database.limits
+        fields = (
+            ("X", self.tr("Go to X"), limits.x_min_mm, limits.x_max_mm, "mm"),
+            ("Y", self.tr("Go to Y"), limits.y_min_mm, limits.y_max_mm, "mm"),
+            ("Z", self.tr("Go to tilt"), limits.z_min_deg, limits.z_max_deg, "°"),
+        )
+        chosen: list[float] = []
+
+        def ask(index: int) -> None:
+            if index == len(fields):
+                self.context.send(MoveTo(chosen[0], chosen[1], chosen[2]))
+                return
+            axis, title, low, high, unit = fields[index]
+            keypad = NumberKeypad(
+                title,
+                self.snapshot.axis(axis).position if self.snapshot is not None else 0.0,
+                -1e6 if low is None else low,
+                1e6 if high is None else high,
+                unit,
+                decimals=2,
+            )
+
+            def accepted(value: float) -> None:
+                chosen.append(value)
+                ask(index + 1)
+
+            keypad.valueAccepted.connect(accepted)
+            self.context.open(keypad)
+
+        ask(0)
+
     def toggle_clamps(self) -> None:
         if self.snapshot is not None:
             self.context.send(SetClamps(not self.snapshot.outputs.clamps_close))
@@ -381,6 +422,10 @@ class ManualScreen(Screen):
         for home in self.home_buttons.values():
             home.setEnabled(not home_reason)
             home.setToolTip(home_reason)
+
+        move_reason = refusal(snapshot, "MoveTo")
+        self.go_to_button.setEnabled(not move_reason)
+        self.go_to_button.setToolTip(move_reason)
 
         clamps_reason = refusal(snapshot, "SetClamps")
         self.clamps_button.setEnabled(not clamps_reason)

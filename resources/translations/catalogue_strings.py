@@ -47,6 +47,8 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "communication not restored"),
     QT_TRANSLATE_NOOP("MachineText", "emergency stop still pressed"),
     QT_TRANSLATE_NOOP("MachineText", "feed override %1 % is not allowed: 0 to 120 %"),
+    QT_TRANSLATE_NOOP("MachineText", "go to position refused: %1"),
+    QT_TRANSLATE_NOOP("MachineText", "go to position: %1 = %2 is not allowed: %3 to %4"),
     QT_TRANSLATE_NOOP("MachineText", "handwheel ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP(
         "MachineText", "hold the enable button to jog with the handwheel or the joystick"
@@ -110,6 +112,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP(
         "MachineText", "the USB pendant is jogging: let it and the axes come to rest first"
     ),
+    QT_TRANSLATE_NOOP("MachineText", "the axes are going to a position: wait, or press Stop"),
     QT_TRANSLATE_NOOP("MachineText", "the board is clamped: unclamp it first"),
     QT_TRANSLATE_NOOP("MachineText", "the board was unclamped: it may have moved, abandon it"),
     QT_TRANSLATE_NOOP(

@@ -46,7 +46,7 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+131"/>
+        <location filename="catalogue_strings.py" line="+134"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
     </message>
@@ -677,7 +677,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-154"/>
+        <location filename="catalogue_strings.py" line="-157"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -825,6 +825,16 @@
         <location line="+1"/>
         <source>feed override %1 % is not allowed: 0 to 120 %</source>
         <translation>korekcija podajanja %1 % ni dovoljena: 0 do 120 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go to position refused: %1</source>
+        <translation>premik na položaj zavrnjen: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go to position: %1 = %2 is not allowed: %3 to %4</source>
+        <translation>premik na položaj: %1 = %2 ni dovoljeno: %3 do %4</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1038,6 +1048,11 @@
     </message>
     <message>
         <location line="+3"/>
+        <source>the axes are going to a position: wait, or press Stop</source>
+        <translation>osi se premikajo na položaj: počakajte ali pritisnite Stop</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the board is clamped: unclamp it first</source>
         <translation>deska je vpeta: najprej jo sprostite</translation>
     </message>
@@ -1395,7 +1410,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+226"/>
+        <location filename="../../app/screens/manual_screen.py" line="+230"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -1451,6 +1466,11 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Go to position…</source>
+        <translation>Premik na položaj…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>All</source>
         <translation>Vse</translation>
     </message>
@@ -1485,7 +1505,22 @@ izmena</translation>
         <translation>Za spreminjanje parametrov se prijavite.</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+24"/>
+        <source>Go to X</source>
+        <translation>Premik na X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to Y</source>
+        <translation>Premik na Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to tilt</source>
+        <translation>Premik na nagib</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>Start the spindle?</source>
         <translation>Zaženem vreteno?</translation>
     </message>
@@ -1505,7 +1540,7 @@ izmena</translation>
         <translation>Stroj ni v ročnem načinu.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>Open clamps</source>
         <translation>Odpri vpenjala</translation>
     </message>
@@ -1520,8 +1555,8 @@ izmena</translation>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="-57"/>
-        <location line="+57"/>
+        <location line="-61"/>
+        <location line="+61"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>

@@ -65,3 +65,41 @@ def test_jogs_on_the_machine_keep_out_of_the_board(rig: Rig) -> None:
     assert c.manual.position("Y") == pytest.approx(edge)
     rig.send(cmd.JogStep("Y", -50.0), run_s=1.0)  # away from it: as always
     assert c.manual.position("Y") == pytest.approx(edge - 50.0)
+
+
+def test_go_to_a_position_goes_around_the_board_or_is_refused(rig: Rig) -> None:
+    c = rig.controller
+    rig.send(cmd.MoveTo(600.0, 100.0, 0.0))
+    assert c.message is not None and c.message.reason is Reason.OPEN_MANUAL_TO_JOG
+    rig.home()
+    rig.world.load_board(150.0)
+    rig.set_parameters({"xy_rapid_speed_mm_s": 300.0})
+    rig.send(cmd.EnterManual(), run_s=0.1)
+    board = c.manual.keep_out
+    assert board is not None
+    box = board.box(15.0)  # at any tilt
+    below, above = (box.x_min + 100.0, box.y_min - 50.0), (box.x_min + 100.0, box.y_max + 50.0)
+    rig.send(cmd.MoveTo(*below, 0.0))
+    assert c.message is None or c.message.reason is not Reason.MOVE_REFUSED
+    rig.until(lambda ctl: not ctl.manual_move.running, 30.0)
+    assert c.manual.position("Y") == pytest.approx(below[1], abs=0.05)  # the drive follows
+
+    crossed: list[tuple[float, float, float]] = []
+
+    def watch(runtime) -> None:  # type: ignore[no-untyped-def]
+        xyz = tuple(runtime.controller.axes.command[n] for n in ("X", "Y", "Z"))
+        if board.inside(xyz):
+            crossed.append(xyz)
+
+    rig.runtime.on_tick.append(watch)
+    rig.send(cmd.MoveTo(*above, 0.0))  # the straight line runs through the board
+    rig.until(lambda ctl: not ctl.manual_move.running, 60.0)
+    rig.runtime.on_tick.remove(watch)
+    assert crossed == []  # around it
+    assert (c.manual.position("X"), c.manual.position("Y")) == pytest.approx(above, abs=0.05)
+
+    rig.send(cmd.MoveTo(600.0, 400.0, 0.0))  # onto the board
+    assert c.message is not None and c.message.reason is Reason.MOVE_REFUSED
+    rig.send(cmd.MoveTo(600.0, 5000.0, 0.0))
+    assert c.message is not None and c.message.reason is Reason.MOVE_OUTSIDE_TRAVEL
+    assert not c.manual_move.running
