@@ -128,9 +128,12 @@ class ManualScreen(Screen):
         self.continuous_button.setChecked(True)
         self.continuous_button.clicked.connect(lambda: self.set_step_mode(False))
         self.step_button.clicked.connect(lambda: self.set_step_mode(True))
+        self.go_to_button = touch_button("goToPosition")
+        self.go_to_button.clicked.connect(self.go_to_position)
         modes = QHBoxLayout()
         modes.addWidget(self.continuous_button)
         modes.addWidget(self.step_button)
+        modes.addWidget(self.go_to_button)
 
         self.step_caption = styled_label("", "caption")
         self.step_buttons: dict[float, QPushButton] = {}
@@ -199,9 +202,6 @@ class ManualScreen(Screen):
         self.spindle_button.clicked.connect(self.toggle_spindle)
         actions.addWidget(self.clamps_button, 1, 0, 1, 2)
         actions.addWidget(self.spindle_button, 1, 2, 1, 2)
-        self.go_to_button = touch_button("goToPosition")
-        self.go_to_button.clicked.connect(self.go_to_position)
-        actions.addWidget(self.go_to_button, 2, 0, 1, 4)
 
         right = QVBoxLayout()
         right.setSpacing(8)
@@ -242,7 +242,8 @@ class ManualScreen(Screen):
         for axis in ("X", "Y", "Z"):
             self.home_buttons[axis].setText(axis)
             self.home_buttons[axis].setToolTip(self.tr("Home %1").replace("%1", axis))
-        self.go_to_button.setText(self.tr("Go to position…"))
+        self.go_to_button.setText(self.tr("Go to…"))
+        self.go_to_button.setToolTip(self.tr("Go to a position typed on the keypad"))
         self.home_buttons[""].setText(self.tr("All"))
         self.home_buttons[""].setToolTip(self.tr("Home all axes"))
         for readout in (self.axis_x, self.axis_y, self.axis_z):

@@ -1466,8 +1466,13 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Go to position…</source>
-        <translation>Go to position…</translation>
+        <source>Go to…</source>
+        <translation>Go to…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Go to a position typed on the keypad</source>
+        <translation>Go to a position typed on the keypad</translation>
     </message>
     <message>
         <location line="+1" />

@@ -1466,8 +1466,13 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Go to position…</source>
-        <translation>Premik na položaj…</translation>
+        <source>Go to…</source>
+        <translation>Pojdi na…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to a position typed on the keypad</source>
+        <translation>Premik na položaj, vpisan na tipkovnici</translation>
     </message>
     <message>
         <location line="+1"/>
