@@ -4,14 +4,18 @@ changes."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+from pathlib import Path
+
 import pytest
 
+from app.config import load_config
 from app.machine import commands as cmd
 from app.machine.planner.jog_keepout import jog_reach
 from app.machine.planner.keepout import TableKeepOut
 from app.machine.refusals import Reason
 from app.machine.states import MachineState
-from tests.machine.conftest import Rig
+from tests.machine.conftest import Rig, make_rig
 
 PARAMS = {
     "start_x_mm": 300.0,
@@ -67,11 +71,21 @@ def test_jogs_on_the_machine_keep_out_of_the_board(rig: Rig) -> None:
     assert c.manual.position("Y") == pytest.approx(edge - 50.0)
 
 
-def test_go_to_a_position_goes_around_the_board_or_is_refused(rig: Rig) -> None:
+def test_go_to_a_position_goes_around_the_board_or_is_refused(tmp_path: Path) -> None:
+    config = load_config()
+    absolute = {n: replace(a, absolute_encoder=True) for n, a in config.axes.items()}
+    rig = make_rig(tmp_path, replace(config, axes=absolute))  # homed at power-up
+    try:
+        _go_around_the_board(rig)
+    finally:
+        rig.runtime.shutdown()
+
+
+def _go_around_the_board(rig: Rig) -> None:
     c = rig.controller
     rig.send(cmd.MoveTo(600.0, 100.0, 0.0))
     assert c.message is not None and c.message.reason is Reason.OPEN_MANUAL_TO_JOG
-    rig.home()
+    assert c.axes.all_homed()
     rig.world.load_board(150.0)
     rig.set_parameters({"xy_rapid_speed_mm_s": 300.0})
     rig.send(cmd.EnterManual(), run_s=0.1)

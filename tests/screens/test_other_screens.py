@@ -19,7 +19,7 @@ from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keypad import NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button, home_from_main_screen, wait_for
+from tests.screens.helpers import enter_pin, find_button, wait_for
 
 
 def keys(tap, overlay, text: str) -> None:
@@ -77,30 +77,6 @@ def test_spindle_on_by_hand_asks_first(qtbot, window, tap) -> None:
     wait_for(qtbot, window, lambda s: s.outputs.spindle_on)
     tap(spindle)  # off at once
     wait_for(qtbot, window, lambda s: not s.outputs.spindle_on)
-
-
-def test_go_to_a_position_typed_on_the_keypad(qtbot, window, tap) -> None:
-    home_from_main_screen(qtbot, window, tap)
-    open_manual(qtbot, window, tap)
-    wait_for(qtbot, window, lambda s: not s.allowed.get("MoveTo"))
-    tap(find_button(window, "goToPosition"))
-    for text in ("250", "120", "2"):  # X, Y, then the tilt
-        keypad = window.overlay()
-        assert isinstance(keypad, NumberKeypad)
-        tap(find_button(keypad, "key_clear"))
-        keys(tap, keypad, text)
-        tap(find_button(keypad, "okButton"))
-    assert window.overlay() is None
-    there = wait_for(
-        qtbot,
-        window,
-        lambda s: (
-            abs(s.axis("X").position - 250.0) < 0.1
-            and abs(s.axis("Y").position - 120.0) < 0.1
-            and abs(s.axis("Z").position - 2.0) < 0.01
-        ),
-    )
-    assert there.state is MachineState.MANUAL
 
 
 def test_step_jog_moves_by_the_step(qtbot, window, tap) -> None:
