@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -76,6 +77,14 @@ class Rig:
         before = self.positions()
         self.run(0.1)
         return self.positions() != pytest.approx(before, abs=1e-4)
+
+
+def homed_at_power_up(config: MachineConfig | None = None) -> MachineConfig:
+    """The configuration with absolute encoders on every axis: homed from power-up (tests
+    that need homed axes but not the homing itself)."""
+    config = config or load_config()
+    axes = {name: replace(axis, absolute_encoder=True) for name, axis in config.axes.items()}
+    return replace(config, axes=axes)
 
 
 def make_rig(tmp_path: Path, config: MachineConfig | None = None) -> Rig:

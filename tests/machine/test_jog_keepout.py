@@ -4,18 +4,16 @@ changes."""
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
-from app.config import load_config
 from app.machine import commands as cmd
 from app.machine.planner.jog_keepout import jog_reach
 from app.machine.planner.keepout import TableKeepOut
 from app.machine.refusals import Reason
 from app.machine.states import MachineState
-from tests.machine.conftest import Rig, make_rig
+from tests.machine.conftest import Rig, homed_at_power_up, make_rig
 
 PARAMS = {
     "start_x_mm": 300.0,
@@ -72,9 +70,7 @@ def test_jogs_on_the_machine_keep_out_of_the_board(rig: Rig) -> None:
 
 
 def test_go_to_a_position_goes_around_the_board_or_is_refused(tmp_path: Path) -> None:
-    config = load_config()
-    absolute = {n: replace(a, absolute_encoder=True) for n, a in config.axes.items()}
-    rig = make_rig(tmp_path, replace(config, axes=absolute))  # homed at power-up
+    rig = make_rig(tmp_path, homed_at_power_up())
     try:
         _go_around_the_board(rig)
     finally:

@@ -19,7 +19,7 @@ from app.machine.recipe_on_machine import (
 )
 from app.machine.refusals import Reason
 from app.machine.states import MachineState
-from tests.machine.conftest import BARRIQUE, Rig, make_rig
+from tests.machine.conftest import BARRIQUE, Rig, homed_at_power_up, make_rig
 
 OTHER = "Tonneau 1000 l"
 
@@ -60,13 +60,12 @@ def test_a_recipe_deleted_while_the_machine_was_off_is_not_selected(
         deleted = db.get_recipe_by_name(OTHER)
         assert deleted is not None and deleted.id is not None
         db.delete_recipe(deleted.id, _technician(db))
-    rig = make_rig(tmp_path)
+    rig = make_rig(tmp_path, homed_at_power_up())
     try:
         c = rig.controller
         assert c.recipe is None
         assert c.message is not None and c.message.reason is Reason.SELECTED_RECIPE_DELETED
         assert repr(OTHER) in str(c.message)
-        rig.home()
         rig.send(cmd.Start())
         assert rig.state is MachineState.READY
         assert c.message is not None and c.message.reason is Reason.SELECT_RECIPE_FIRST
@@ -93,7 +92,10 @@ def test_a_recipe_changed_while_the_machine_was_off_keeps_its_version(
         rig.runtime.shutdown()
 
 
-def test_a_recipe_deleted_while_selected_is_not_started(ready_rig: Rig) -> None:
+def test_a_recipe_deleted_while_selected_is_not_started(tmp_path: Path) -> None:
+    ready_rig = make_rig(tmp_path, homed_at_power_up())
+    ready_rig.select()
+    ready_rig.load()
     c = ready_rig.controller
     assert c.recipe is not None and c.recipe.id is not None
     db = c.store.db  # type: ignore[attr-defined]
@@ -101,9 +103,11 @@ def test_a_recipe_deleted_while_selected_is_not_started(ready_rig: Rig) -> None:
     ready_rig.send(cmd.Start())
     assert ready_rig.state is MachineState.READY and c.cycle is None
     assert c.message is not None and c.message.reason is Reason.SELECTED_RECIPE_DELETED
+    ready_rig.runtime.shutdown()
 
 
-def test_saved_parameters_do_not_swap_the_recipe_version(ready_rig: Rig) -> None:
+def test_saved_parameters_do_not_swap_the_recipe_version(rig: Rig) -> None:
+    ready_rig = rig
     c = ready_rig.controller
     chosen = c.recipe
     assert chosen is not None
