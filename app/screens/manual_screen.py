@@ -48,6 +48,7 @@ from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ConfirmOverlay
 from app.screens.widgets.hold_button import HoldButton
 from app.screens.widgets.keypad import NumberKeypad
+from app.screens.widgets.pendant_status import PendantStatus
 from app.screens.widgets.readouts import AxisReadout, set_text, styled_label
 
 STEP_SIZES: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0)
@@ -155,6 +156,8 @@ class ManualScreen(Screen):
         mode_row.addWidget(self.mode_label, 1)
         mode_row.addWidget(self.enter_button)
         jog_layout.addLayout(mode_row)
+        self.pendant_status = PendantStatus()
+        jog_layout.addWidget(self.pendant_status)
         jog_layout.addLayout(cross, 1)
         jog_layout.addLayout(modes)
 
@@ -248,6 +251,7 @@ class ManualScreen(Screen):
         self.home_buttons[""].setToolTip(self.tr("Home all axes"))
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
+        self.pendant_status.retranslate()
         if self.snapshot is None:
             self.mode_label.setText(self.tr("Waiting for the machine…"))
 
@@ -398,6 +402,7 @@ class ManualScreen(Screen):
             )
         self.enter_button.setVisible(not manual)
         self.enter_button.setEnabled(not refusal(snapshot, "EnterManual"))
+        self.pendant_status.show_view(snapshot.pendant)
 
         jog_reason = refusal(snapshot, "JogContinuous")
         for button in self.jog_buttons.values():

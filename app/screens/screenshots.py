@@ -28,6 +28,7 @@ from app.machine.commands import (
     LeaveManual,
     LoadBoard,
     Reset,
+    SelectHandwheel,
     SelectRecipe,
     SetClamps,
     Start,
@@ -229,6 +230,12 @@ def render_screenshots(
             )
             driver.send_and_wait(
                 EnterManual(), lambda s: s.state is MachineState.MANUAL, "manual mode"
+            )
+            # The handwheel's switches on X x10: the Manual screen shows them.
+            driver.send_and_wait(
+                SelectHandwheel("X", 10),
+                lambda s: s.pendant.wheel_multiplier == 10,
+                "handwheel on X x10",
             )
             window.show_screen("manual")
             shoot("manual")

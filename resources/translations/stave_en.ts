@@ -1410,7 +1410,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+230" />
+        <location filename="../../app/screens/manual_screen.py" line="+233" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -1490,7 +1490,7 @@ shift</translation>
         <translation>NOT HOMED</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Waiting for the machine…</source>
         <translation>Waiting for the machine…</translation>
     </message>
@@ -1545,7 +1545,7 @@ shift</translation>
         <translation>Not in manual mode.</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+39" />
         <source>Open clamps</source>
         <translation>Open clamps</translation>
     </message>
@@ -1560,8 +1560,8 @@ shift</translation>
         <translation>Spindle OFF</translation>
     </message>
     <message>
-        <location line="-61" />
-        <location line="+61" />
+        <location line="-62" />
+        <location line="+62" />
         <source>Spindle ON</source>
         <translation>Spindle ON</translation>
     </message>
@@ -1856,6 +1856,54 @@ shift</translation>
         <location line="+1" />
         <source>X-Y speed of non-cutting moves</source>
         <translation>X-Y speed of non-cutting moves</translation>
+    </message>
+</context>
+<context>
+    <name>PendantStatus</name>
+    <message>
+        <location filename="../../app/screens/widgets/pendant_status.py" line="+23" />
+        <source>the screen</source>
+        <translation>the screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the handwheel</source>
+        <translation>the handwheel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the joystick</source>
+        <translation>the joystick</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the USB pendant</source>
+        <translation>the USB pendant</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>nobody (all at rest)</source>
+        <translation>nobody (all at rest)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Jogging: %1</source>
+        <translation>Jogging: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Handwheel: %1 ×%2</source>
+        <translation>Handwheel: %1 ×%2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Handwheel: off</source>
+        <translation>Handwheel: off</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>USB pendant connected</source>
+        <translation>USB pendant connected</translation>
     </message>
 </context>
 <context>

@@ -1410,7 +1410,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+230"/>
+        <location filename="../../app/screens/manual_screen.py" line="+233"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -1490,7 +1490,7 @@ izmena</translation>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Waiting for the machine…</source>
         <translation>Čakam na stroj…</translation>
     </message>
@@ -1545,7 +1545,7 @@ izmena</translation>
         <translation>Stroj ni v ročnem načinu.</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Open clamps</source>
         <translation>Odpri vpenjala</translation>
     </message>
@@ -1560,8 +1560,8 @@ izmena</translation>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+61"/>
+        <location line="-62"/>
+        <location line="+62"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>
@@ -1856,6 +1856,54 @@ izmena</translation>
         <location line="+1"/>
         <source>X-Y speed of non-cutting moves</source>
         <translation>Hitrost X-Y pri premikih brez rezanja</translation>
+    </message>
+</context>
+<context>
+    <name>PendantStatus</name>
+    <message>
+        <location filename="../../app/screens/widgets/pendant_status.py" line="+23"/>
+        <source>the screen</source>
+        <translation>zaslon</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the handwheel</source>
+        <translation>ročno kolo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the joystick</source>
+        <translation>igralna palica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the USB pendant</source>
+        <translation>USB-upravljalnik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nobody (all at rest)</source>
+        <translation>nihče (vse miruje)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Jogging: %1</source>
+        <translation>Premika: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Handwheel: %1 ×%2</source>
+        <translation>Ročno kolo: %1 ×%2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Handwheel: off</source>
+        <translation>Ročno kolo: izklopljeno</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>USB pendant connected</source>
+        <translation>USB-upravljalnik priključen</translation>
     </message>
 </context>
 <context>
