@@ -143,9 +143,10 @@ class ManualControl:
         return None if result.accepted else result.reason
 
     def follow(self, axis: str, target: float, axes: AxisGroup) -> tuple[float, Refusal | None]:
-        """Move ``axis`` to ``target`` with the jog ramp (the handwheel); the same soft limits
-        and limit-switch rule as the screen's step jog. Returns the target taken (clipped at
-        a soft limit, or where the axis already goes when refused) and why, if not all."""
+        """Move ``axis`` to ``target`` with the jog ramp (the handwheel); the same soft limits,
+        limit-switch rule and board keep-out as the screen's jog (the wheel stops at the
+        board's edge, as a held jog does). Returns the target taken (clipped at a soft limit
+        or the keep-out, or where the axis already goes when refused) and why, if not all."""
         jogger = self._joggers.get(axis)
         if jogger is None:
             return target, refusal(Reason.AXIS_UNKNOWN, repr(axis))
@@ -155,10 +156,15 @@ class ManualControl:
         axes.request_enable()
         if reason := self._toward_active_switch(axis, 1 if target > base else -1, axes):
             return base, reason
+        stopped: Refusal | None = None
+        if (reach := self._reach(axis, target)) is not None:  # the board's keep-out
+            if abs(reach - jogger.position) < _AT_KEEP_OUT:
+                return base, refusal(Reason.JOG_AT_BOARD, axis)
+            target, stopped = reach, refusal(Reason.JOG_STOPS_AT_BOARD, axis, f"{reach:.1f}")
         result = jogger.move_to(target)
         if not result.accepted or result.target is None:
             return base, result.reason
-        return result.target, result.reason
+        return result.target, result.reason or stopped
 
     def drive(self, axis: str, fraction: float, now_s: float, axes: AxisGroup) -> Refusal | None:
         """Jog ``axis`` at ``fraction`` (-1..1) of its jog velocity (a joystick): a

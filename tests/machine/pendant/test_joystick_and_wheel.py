@@ -74,3 +74,33 @@ def test_counts_per_increment_keeps_the_remainder() -> None:
     assert wheel.read(image).increments == 0  # first read
     moved = [wheel.read(replace(image, handwheel_count=100 + n)).increments for n in range(1, 10)]
     assert sum(moved) == 2 and moved[3] == 1 and moved[7] == 1
+
+
+def test_the_wheel_stops_at_the_boards_keep_out_as_a_held_jog_does() -> None:
+    from app.config import load_config
+    from app.machine.manual import ManualControl
+    from app.machine.planner.keepout import TableKeepOut
+    from app.machine.refusals import Reason
+
+    params = {
+        "start_x_mm": 300.0,
+        "start_y_mm": 400.0,
+        "tool_radius_mm": 25.0,
+        "machine_height_mm": 250.0,
+        "tilt_clearance_mm": 100.0,
+    }
+    config = load_config()
+    manual = ManualControl(config.axes)
+    board = TableKeepOut.for_board(1000.0, 200.0, params)
+    manual.keep_out = board
+    edge = board.box(0.0).y_min
+    for name, where in (("X", 600.0), ("Y", edge - 5.0), ("Z", 0.0)):
+        manual._joggers[name].set_position(where)  # beside the board, below its edge
+
+    from app.drivers.registry import create_backend
+    from app.machine.axes import AxisGroup
+
+    axes = AxisGroup(config.axes, create_backend(config).motion)  # no feedback yet: no switch
+    taken, reason = manual.follow("Y", edge + 20.0, axes)
+    assert taken == pytest.approx(edge)
+    assert reason is not None and reason.reason is Reason.JOG_STOPS_AT_BOARD
