@@ -450,6 +450,16 @@ class SimDrive:
         if jammed:
             self._v = 0.0
 
+    def move_by_hand(self, position: float) -> None:
+        """The load pushed to ``position`` (encoder frame) while the drive applies no torque,
+        as a setter does on a disabled axis; a powered drive holds its axis, so it refuses."""
+        if self._torque_on():
+            raise ValueError(f"{self.name}: move_by_hand needs a drive without torque")
+        self._p = position - self._offset
+        self._v = 0.0
+        self._demand = self._target = self._target_prev = position
+        self._update_limits()
+
     def stick_limit_switch(self, positive: bool, active: bool) -> None:
         """A limit switch that reads active wherever the axis is (hit by something)."""
         if positive:

@@ -21,8 +21,10 @@ from app.config import MachineConfig, parse_config
 from app.drivers.canopen.backend import create_backend
 from app.drivers.canopen.settings import INPUT_FUNCTIONS, OUTPUT_FUNCTIONS
 from app.drivers.contracts import AxisFeedback, InputImage, MachineBackend, OutputImage
+from app.drivers.sim.settings import SimSettings
 from app.drivers.sim.world import SimWorld
-from tests.drivers.canopen.sim_drive import SimDrive, SimIoNode, SimNetwork
+from tests.drivers.canopen.sim_drive import SimDrive
+from tests.drivers.canopen.sim_nodes import SimIoNode, SimNetwork
 from tests.drivers.canopen.world_nodes import WorldBus
 
 NODE_IDS = {"X": 1, "Y": 2, "Z": 3}
@@ -126,7 +128,23 @@ def config(channel: str) -> MachineConfig:
 
 
 @pytest.fixture
-def backend(config: MachineConfig, bench: Bench) -> Iterator[MachineBackend]:
+def bus(config: MachineConfig, channel: str) -> Iterator[WorldBus]:
+    """The simulated world's drives and I/O on the test's channel; every axis starts at 0 on
+    its encoder (absolute or not), so that counts in a test are plain numbers."""
+    world = SimWorld(config, SimSettings(start_position=dict.fromkeys(NODE_IDS, 0.0)))
+    created = world_bus(world, channel)
+    yield created
+    created.close()
+
+
+@pytest.fixture
+def nodes(request: pytest.FixtureRequest) -> object:
+    """The devices on the bus: the world's (``bus``) unless the test asks for ``bench``."""
+    return request.getfixturevalue("bench" if "bench" in request.fixturenames else "bus")
+
+
+@pytest.fixture
+def backend(config: MachineConfig, nodes: object) -> Iterator[MachineBackend]:
     created = create_backend(config)
     yield created
     for device in created.devices():

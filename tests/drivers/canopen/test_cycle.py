@@ -27,7 +27,8 @@ from tests.drivers.canopen.conftest import (
     Bench,
     machine_data,
 )
-from tests.drivers.canopen.sim_drive import SimDrive, SimNetwork, SimStationIo
+from tests.drivers.canopen.sim_drive import SimDrive, SimStationIo
+from tests.drivers.canopen.sim_nodes import SimNetwork
 from tests.drivers.cycle_helpers import cut_one_board, select_sample_recipe
 
 BOARD_MM = 150.0

@@ -34,7 +34,8 @@ from tests.drivers.canopen.conftest import (
     run_until,
     start,
 )
-from tests.drivers.canopen.sim_drive import EMCY_HEARTBEAT, SimDrive, SimNetwork
+from tests.drivers.canopen.sim_drive import EMCY_HEARTBEAT, SimDrive
+from tests.drivers.canopen.sim_nodes import SimNetwork
 
 S = Cia402State
 TIMEOUT_S = 3.0  # bound of every wait; the consumer time in these tests is 250 ms

@@ -6,8 +6,9 @@ state machine on the controlword, CSP with finite acceleration, homing on a swit
 codes, limit switches, safe torque off), the pneumatics, the spindle, the board and the
 E-stop chain are the machine the simulation backend and the Modbus emulator drive; the
 CANopen backend meets exactly that machine here, only through SDOs, PDOs, EMCY and
-heartbeats (the node infrastructure of :mod:`tests.drivers.canopen.sim_drive`). So the fault
-matrix injects the same faults into the same world on every backend.
+heartbeats (the node infrastructure of :mod:`tests.drivers.canopen.sim_nodes`). So the fault
+matrix and the CANopen unit tests inject the same faults into the same world on every
+backend, and there is no second drive model with its own power state machine.
 
 Time: the X drive is the world's clock: at every SYNC, before any node samples its TPDOs,
 the world advances by one period. While the bus is silent (a lost link, after which the
@@ -19,19 +20,36 @@ injected) silences its nodes: no PDO, no heartbeat.
 from __future__ import annotations
 
 import threading
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field
+
+from canopen.sdo import SdoAbortedError
 
 from app.drivers.canopen import objects as obj
-from app.drivers.cia402 import OperationMode
+from app.drivers.cia402 import Cia402State, OperationMode
 from app.drivers.contracts import OutputImage
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.world import SimWorld
-from tests.drivers.canopen.sim_drive import SimIoNode, SimNetwork, SimNode
+from tests.drivers.canopen.sim_nodes import SimIoNode, SimNetwork, SimNode
 
 _MODES = {int(mode): mode for mode in OperationMode}
 # RPDO1 carries controlword, target, mode; a drive applies the mode first (it decides what
 # controlword bit 4 means), then the controlword, then the target.
 _APPLY_ORDER = (obj.MODES_OF_OPERATION, obj.CONTROLWORD, obj.TARGET_POSITION)
+# The homing methods (0x6098) the drives accept; another is refused with an SDO abort.
+SUPPORTED_HOMING_METHODS = frozenset({17, 18, 19, 20, 21, 22, 33, 34, 35, 37})
+ABORT_VALUE_RANGE = 0x06090030
+
+
+@dataclass
+class DriveRecord:
+    """What a test may check afterwards: the controlwords the drive took (while OPERATIONAL),
+    the targets it followed (enabled, in CSP), both with the SYNC count, and the EMCY codes
+    it sent."""
+
+    controlwords: list[tuple[int, int]] = field(default_factory=list)  # (sync, controlword)
+    targets: list[tuple[int, int]] = field(default_factory=list)  # (sync, counts)
+    emcy_sent: list[int] = field(default_factory=list)
 
 
 class WorldBus:
@@ -48,12 +66,22 @@ class WorldBus:
         input_bits: Mapping[str, int],
         output_bits: Mapping[str, int],
         analog: Mapping[str, int] | None = None,
+        *,
+        without_consumer: Collection[str] = (),
     ) -> None:
+        """``without_consumer``: drives whose dictionary has no 0x1016 (no heartbeat
+        consumer)."""
         self.world = world
         self.lock = threading.RLock()
         self.network = SimNetwork(channel)
         self.drives = {
-            name: WorldDrive(self, node, world.drives[name], counts_per_unit[name])
+            name: WorldDrive(
+                self,
+                node,
+                world.drives[name],
+                counts_per_unit[name],
+                heartbeat_consumer=name not in without_consumer,
+            )
             for name, node in node_ids.items()
         }
         self.clock = self.drives[next(iter(node_ids))]
@@ -89,13 +117,30 @@ class WorldDrive(SimNode):
 
     link = "drives"
 
-    def __init__(self, bus: WorldBus, node_id: int, drive: SimDrive, counts: float) -> None:
+    def __init__(
+        self,
+        bus: WorldBus,
+        node_id: int,
+        drive: SimDrive,
+        counts: float,
+        *,
+        heartbeat_consumer: bool = True,
+    ) -> None:
         self.bus = bus
         self.drive = drive
         self.counts = counts
+        self.record = DriveRecord()
         self._buffer: dict[int, int] | None = None
         self._emcy_seen = len(bus.world.emcy_log)
-        super().__init__(bus.network, node_id, obj.build_drive_od(node_id))
+        od = obj.build_drive_od(node_id)
+        if not heartbeat_consumer:
+            del od[obj.CONSUMER_HEARTBEAT_TIME]
+        super().__init__(bus.network, node_id, od)
+
+    def move_by_hand(self, counts: int) -> None:
+        """The axis pushed to ``counts`` on its encoder while its drive is not powered."""
+        with self.bus.lock:
+            self.drive.move_by_hand(counts / self.counts)
 
     def _on_sync(self, can_id: int, data: bytearray, timestamp: float) -> None:
         if self is self.bus.clock:
@@ -118,6 +163,8 @@ class WorldDrive(SimNode):
 
     def on_write(self, index: int, subindex: int, value: object) -> None:
         assert isinstance(value, int)
+        if index == obj.HOMING_METHOD and value not in SUPPORTED_HOMING_METHODS:
+            raise SdoAbortedError(ABORT_VALUE_RANGE)
         if self._buffer is not None:
             self._buffer[index] = value
         else:
@@ -126,8 +173,15 @@ class WorldDrive(SimNode):
     def _write(self, index: int, value: int) -> None:
         drive = self.drive
         if index == obj.CONTROLWORD:
+            if self.nmt_state == "OPERATIONAL":
+                self.record.controlwords.append((self.sync_count, value))
             drive.write_controlword(value)
         elif index == obj.TARGET_POSITION:
+            if (
+                drive.state is Cia402State.OPERATION_ENABLED
+                and drive.mode is OperationMode.CYCLIC_SYNC_POSITION
+            ):
+                self.record.targets.append((self.sync_count, value))
             drive.write_target(value / self.counts)
         elif index == obj.MODES_OF_OPERATION and value in _MODES:
             drive.set_mode(_MODES[value])
@@ -154,6 +208,7 @@ class WorldDrive(SimNode):
         log = self.bus.world.emcy_log
         for record in log[self._emcy_seen :]:
             if record.device == self.drive.name:
+                self.record.emcy_sent.append(record.code)
                 self.node.emcy.send(record.code, 0x01)
         self._emcy_seen = len(log)
 

@@ -227,6 +227,18 @@ def test_enabling_holds_the_axis_where_it_is() -> None:
     assert drive.position == pytest.approx(100.0, abs=1e-9)
 
 
+def test_an_axis_moved_by_hand_stays_there_and_is_held_there_when_enabled() -> None:
+    drive, _ = drive_in(S.SWITCHED_ON)  # voltage on, no torque: the load moves freely
+    drive.move_by_hand(120.0)
+    drive.write_controlword(CW_ENABLE_OPERATION)
+    for _ in range(100):
+        drive.step(DT)
+    assert drive.position == pytest.approx(120.0, abs=1e-9)
+    with pytest.raises(ValueError, match="X: move_by_hand needs a drive without torque"):
+        drive.move_by_hand(100.0)  # a powered drive holds its axis
+    assert drive.position == pytest.approx(120.0, abs=1e-9)
+
+
 def test_statusword_bits_beyond_the_power_state() -> None:
     drive, _ = drive_in(S.OPERATION_ENABLED)
     assert drive.statusword & (1 << 12)  # CSP: the drive follows the command value
