@@ -392,7 +392,8 @@ class MachineController(CycleControl):
                 if self.manual_move.tick(self.axes):
                     self.manual.sync(self.axes)
             elif warning := self.manual.tick(self.now_s, self.config.period_s, self.axes):
-                self.alarms.raise_alarm(AlarmCode.JOG_NOT_REFRESHED, warning)
+                detail = refusal(Reason.JOG_NOT_REFRESHED_DETAIL, warning)
+                self.alarms.raise_alarm(AlarmCode.JOG_NOT_REFRESHED, warning, detail)
                 self.alarms.clear(AlarmCode.JOG_NOT_REFRESHED, warning)
         elif self.state is MachineState.AUTOMATIC and self.cycle is not None:
             self.outputs = self.cycle.tick(self.now_s, self.inputs, self.outputs, self.axes)

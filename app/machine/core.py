@@ -16,7 +16,7 @@ from dataclasses import replace
 from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import DriverError, InputImage, MachineBackend, OutputImage, WidthGauge
-from app.machine.alarms import AlarmCode, AlarmManager
+from app.machine.alarms import AlarmCode, AlarmDetail, AlarmManager
 from app.machine.axes import AxisGroup
 from app.machine.cycle import AutomaticCycle
 from app.machine.devices import DeviceLink
@@ -71,7 +71,20 @@ class ControllerCore:
         self.recipe: Recipe | None = None
         self.cycle: AutomaticCycle | None = None
         self.homing: HomingSequence | None = None
-        self.message: Refusal | None = None  # the last refusal or notice for the operator
+        self._message: Refusal | None = None
+        self.message_serial = 0
+
+    @property
+    def message(self) -> Refusal | None:
+        """The last refusal or notice for the operator."""
+        return self._message
+
+    @message.setter
+    def message(self, value: Refusal | None) -> None:
+        """Every message counts, the same one again too: the screens show a message for a
+        while from the moment it is given, and a second refusal of the same kind is news."""
+        self._message = value
+        self.message_serial += 1
 
     def power_up(self) -> None:
         """Configure and activate every device; the state follows from the encoders, or is
@@ -134,7 +147,7 @@ class ControllerCore:
         self,
         code: AlarmCode,
         source: str,
-        detail: str,
+        detail: AlarmDetail,
         arguments: tuple[AlarmArgument, ...] = (),
     ) -> None:
         """Raise a fault alarm, stop at once and latch ERROR (IEC 60204-1 stop category 1:
@@ -200,7 +213,7 @@ class ControllerCore:
         in the journal meanwhile; the machine goes on)."""
         waited_s = self.store.unstored_age_s()
         if waited_s > RECORD_DELAY_ALARM_S:
-            detail = f"oldest waiting {waited_s:.0f} s"
+            detail = refusal(Reason.RECORDS_WAITING_DETAIL, f"{waited_s:.0f}")
             self.alarms.raise_alarm(AlarmCode.RECORDS_WAITING, "database", detail)
         elif waited_s == 0.0:
             self.alarms.clear(AlarmCode.RECORDS_WAITING, "database")

@@ -20,7 +20,7 @@ from typing import Any
 from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import CommunicationError, InputImage, OutputImage, WidthGauge
-from app.machine.alarms import AlarmCode
+from app.machine.alarms import AlarmCode, AlarmDetail
 from app.machine.axes import AxisGroup
 from app.machine.cycle_plan import PlannedStave, PlanningError
 from app.machine.cycle_times import StepClock, timed_step
@@ -28,6 +28,7 @@ from app.machine.executor import ExecutorOutput, PathExecutor
 from app.machine.planner.continuation import Continuation
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
 from app.machine.planner.trajectory import Phase
+from app.machine.refusals import Reason, Refusal
 from app.machine.states import CycleStep, TimedStep
 
 PlanJob = Callable[[], Any]
@@ -65,8 +66,8 @@ def run_now(job: PlanJob) -> concurrent.futures.Future[Any]:
 class CycleFault(Exception):
     """The cycle cannot go on: raise alarm ``code`` at ``source``."""
 
-    def __init__(self, code: AlarmCode, detail: str, source: str = "") -> None:
-        super().__init__(detail)
+    def __init__(self, code: AlarmCode, detail: AlarmDetail, source: str = "") -> None:
+        super().__init__(str(detail))
         self.code = code
         self.detail = detail
         self.source = source
@@ -166,13 +167,13 @@ class AutomaticCycle:
         return now_s - self._step_started_s
 
     def _wait_sensor(
-        self, ok: bool, now_s: float, travel_s: float, code: AlarmCode, what: str
+        self, ok: bool, now_s: float, travel_s: float, code: AlarmCode, what: Reason
     ) -> bool:
         if ok:
             return True
         limit_s = travel_s + self._config.io.sensor_timeout_s
         if self._waited(now_s) > limit_s:
-            raise CycleFault(code, f"{what} not reached after {limit_s:.1f} s")
+            raise CycleFault(code, Refusal(what, (f"{limit_s:.1f}",)))
         return False
 
     @property
@@ -226,15 +227,11 @@ class AutomaticCycle:
             and step is not CycleStep.UNCLAMPING
             and not inputs.part_present
         ):
-            raise CycleFault(
-                AlarmCode.BOARD_REMOVED, f"the part-present sensor went off while {step.value}"
-            )
+            raise CycleFault(AlarmCode.BOARD_REMOVED, Refusal(Reason.PART_SENSOR_OFF))
 
         if step is CycleStep.WAIT_FOR_PART and self._continue_job is not None:
             if not inputs.part_present:
-                raise CycleFault(
-                    AlarmCode.BOARD_REMOVED, "the partly cut board is no longer on the table"
-                )
+                raise CycleFault(AlarmCode.BOARD_REMOVED, Refusal(Reason.PARTLY_CUT_GONE))
             outputs = replace(outputs, spindle_on=False)
             # Enabled and planned from rest only: an axis still running down after the
             # interruption would start the retract from a position it has already left.
@@ -260,7 +257,7 @@ class AutomaticCycle:
                 now_s,
                 io.centering_time_s,
                 AlarmCode.CENTERING_SENSOR,
-                "centering device extended",
+                Reason.CENTERING_EXTENDED,
             ):
                 outputs = self._clamp(outputs)
                 self._go(CycleStep.CLAMPING, now_s)
@@ -271,7 +268,7 @@ class AutomaticCycle:
                 now_s,
                 io.clamp_time_s,
                 AlarmCode.CLAMPS_SENSOR,
-                "clamps closed",
+                Reason.CLAMPS_CLOSED,
             ):
                 outputs = replace(outputs, centering_extend=False)
                 self._request_width()
@@ -288,7 +285,7 @@ class AutomaticCycle:
                 now_s,
                 io.centering_time_s,
                 AlarmCode.CENTERING_SENSOR,
-                "centering device retracted",
+                Reason.CENTERING_RETRACTED,
             ):
                 self._start_path(now_s)
         elif step in _PATH_STEPS:
@@ -296,7 +293,11 @@ class AutomaticCycle:
         elif step is CycleStep.UNCLAMPING:
             outputs = replace(outputs, clamps_close=False, spindle_on=False)
             if self._wait_sensor(
-                inputs.clamps_open, now_s, io.clamp_time_s, AlarmCode.CLAMPS_SENSOR, "clamps open"
+                inputs.clamps_open,
+                now_s,
+                io.clamp_time_s,
+                AlarmCode.CLAMPS_SENSOR,
+                Reason.CLAMPS_OPENED,
             ):
                 self.finished = True
                 self._step_started_s = now_s
@@ -357,15 +358,14 @@ class AutomaticCycle:
         if not inputs.spindle_running:
             if self._spindle_ran:  # it ran and stopped: not a slow start
                 raise CycleFault(
-                    AlarmCode.SPINDLE_STOPPED, "spindle running feedback lost", "spindle"
+                    AlarmCode.SPINDLE_STOPPED, Refusal(Reason.SPINDLE_FEEDBACK_LOST), "spindle"
                 )
             spindle_on_s = now_s if self._spindle_on_s is None else self._spindle_on_s
             limit_s = self._config.io.spindle_runup_s + self._config.io.sensor_timeout_s
             if now_s - spindle_on_s > limit_s:
                 raise CycleFault(
                     AlarmCode.SPINDLE_NOT_STARTED,
-                    f"spindle running feedback not reached after {limit_s:.1f} s "
-                    "(the cutter waits at the lead-in, clear of the board)",
+                    Refusal(Reason.SPINDLE_RUNNING, (f"{limit_s:.1f}",)),
                     "spindle",
                 )
             return
@@ -411,7 +411,7 @@ class AutomaticCycle:
                 if self._waited(now_s) > GAUGE_TIMEOUT_S:
                     raise CycleFault(
                         AlarmCode.GAUGE_NO_READING,
-                        f"no reading within {GAUGE_TIMEOUT_S:.1f} s",
+                        Refusal(Reason.GAUGE_NO_READING_DETAIL, (f"{GAUGE_TIMEOUT_S:.1f}",)),
                         "gauge",
                     )
                 return outputs
@@ -506,7 +506,9 @@ class AutomaticCycle:
         if step is not self.step:
             self._go(step, now_s)
         if out.cutting and not inputs.spindle_running:
-            raise CycleFault(AlarmCode.SPINDLE_STOPPED, "spindle running feedback lost", "spindle")
+            raise CycleFault(
+                AlarmCode.SPINDLE_STOPPED, Refusal(Reason.SPINDLE_FEEDBACK_LOST), "spindle"
+            )
         # Overlap: the clamps open as soon as the cutter is clear of the board, while it
         # still runs out along the lead-out (or returns), not after it has stopped.
         if not self._clamps_released and self._clear_of_board(out, axes):

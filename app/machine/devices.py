@@ -22,7 +22,7 @@ from app.drivers.contracts import (
     WidthGauge,
 )
 from app.machine.alarms import AlarmCode
-from app.machine.supervision import EMERGENCY_TEXTS, Finding
+from app.machine.supervision import Finding, fault_detail
 
 log = logging.getLogger(__name__)
 
@@ -74,8 +74,7 @@ class DeviceLink:
             self.comms_ok = False
             return Finding(AlarmCode.COMMUNICATION_LOST, event.device, detail)
         if event.kind is DeviceEventKind.EMERGENCY and event.code:
-            text = event.text or EMERGENCY_TEXTS.get(event.code, "")
-            log.warning("EMCY %s 0x%04X %s", event.device, event.code, text)
+            log.warning("EMCY %s %s", fault_detail(event.device, event.code), event.text)
         elif event.kind is DeviceEventKind.COMMUNICATION_RESTORED:
             log.info("communication restored: %s (reset needed)", event.device)
         return None

@@ -13,13 +13,15 @@ from dataclasses import dataclass, field
 from app.config import AxisConfig
 from app.machine.axes import AxisGroup
 from app.machine.executor import PathExecutor
+from app.machine.refusals import Reason, Refusal, refusal
+from app.machine.supervision import fault_code_text
 
 HOMING_ORDER: tuple[str, ...] = ("Z", "Y", "X")
 
 
 class HomingFailed(Exception):
-    def __init__(self, axis: str, detail: str) -> None:
-        super().__init__(f"{axis}: {detail}")
+    def __init__(self, axis: str, detail: Refusal) -> None:
+        super().__init__(str(detail))
         self.axis = axis
         self.detail = detail
 
@@ -61,7 +63,10 @@ class HomingSequence:
         assert self.clearance is not None
         if not axes.request_enable():
             if now_s - self._phase_started_s > 2.0:
-                raise HomingFailed(self.current_axis, "drives did not enable within 2 s")
+                raise HomingFailed(
+                    self.current_axis,
+                    refusal(Reason.DRIVE_DID_NOT_ENABLE_DETAIL, self.current_axis, 2),
+                )
             return
         out = self.clearance.step()
         axes.command.update({"X": out.x, "Y": out.y, "Z": out.z})
@@ -81,18 +86,23 @@ class HomingSequence:
         feedback = axes.feedback[name]
         waited_s = now_s - self._phase_started_s
         if feedback.faulted:
-            raise HomingFailed(name, f"drive fault 0x{feedback.fault_code:04X} while homing")
+            raise HomingFailed(
+                name,
+                refusal(
+                    Reason.DRIVE_FAULT_WHILE_HOMING, name, fault_code_text(feedback.fault_code)
+                ),
+            )
         if self._phase == "enable":
             if axes.request_enable():
                 axes.motion.start_homing(name)
                 self._next_phase("start", now_s)
             elif waited_s > 2.0:
-                raise HomingFailed(name, "drive did not enable within 2 s")
+                raise HomingFailed(name, refusal(Reason.DRIVE_DID_NOT_ENABLE_DETAIL, name, 2))
         elif self._phase == "start":
             if feedback.homing_active:
                 self._next_phase("running", now_s)
             elif waited_s > 1.0:
-                raise HomingFailed(name, "drive did not start homing within 1 s")
+                raise HomingFailed(name, refusal(Reason.HOMING_DID_NOT_START, name, 1))
         elif self._phase == "running":
             if not feedback.homing_active and feedback.homed:
                 self.log.append(f"{name} homed at {feedback.position:.3f}")
@@ -102,6 +112,6 @@ class HomingSequence:
                 else:
                     self._next_phase("enable", now_s)
             elif not feedback.homing_active:
-                raise HomingFailed(name, "homing ended without finding the home switch")
+                raise HomingFailed(name, refusal(Reason.HOME_SWITCH_NOT_FOUND, name))
             elif waited_s > homing_timeout_s(self.configs[name]):
-                raise HomingFailed(name, f"not homed after {waited_s:.0f} s")
+                raise HomingFailed(name, refusal(Reason.HOMING_TIMEOUT, name, f"{waited_s:.0f}"))

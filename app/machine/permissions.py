@@ -54,6 +54,10 @@ def _no(reason: Reason) -> Refusal:
 
 
 def _latched(f: Facts) -> Verdict:
+    """Why a latched machine refuses; it names Reset only while Reset is possible (the
+    hint follows the button: with the button still pressed, Reset is disabled)."""
+    if f.state is MachineState.EMERGENCY_STOP and not f.inputs.estop_ok:
+        return _no(R.LATCHED_ESTOP_PRESSED)
     if f.state in _LATCHED:
         return _no(_LATCHED[f.state])
     if f.state is MachineState.POWER_UP:

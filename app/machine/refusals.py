@@ -19,6 +19,9 @@ class Reason(enum.Enum):
 
     LATCHED_ERROR = "machine is in error: press Reset first"
     LATCHED_ESTOP = "machine is in emergency stop: press Reset first"
+    LATCHED_ESTOP_PRESSED = (
+        "machine is in emergency stop: release the emergency stop button, then press Reset"
+    )
     STARTING_UP = "machine is still starting up"
     LEAVE_MANUAL_FIRST = "leave manual mode first"
     CYCLE_RUNNING = "a cycle is already running"
@@ -105,12 +108,18 @@ class Reason(enum.Enum):
         "press it again"
     )
     AT_SOFT_LIMIT = "axis %1 is at its soft limit"
-    AT_SOFT_LIMIT_VALUE = "axis %1 is at its soft limit %2 = %3"
-    BEYOND_SOFT_LIMIT = (
-        "axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range "
+    AT_LOWER_SOFT_LIMIT = "axis %1 is at its lower soft limit %2"
+    AT_UPPER_SOFT_LIMIT = "axis %1 is at its upper soft limit %2"
+    BEYOND_LOWER_SOFT_LIMIT = (
+        "axis %1 is below its lower soft limit %2 (at %3): only motion back toward the range "
         "is allowed"
     )
-    CLIPPED_TO_SOFT_LIMIT = "clipped to the soft limit %1 = %2"
+    BEYOND_UPPER_SOFT_LIMIT = (
+        "axis %1 is above its upper soft limit %2 (at %3): only motion back toward the range "
+        "is allowed"
+    )
+    CLIPPED_TO_LOWER_SOFT_LIMIT = "clipped to the lower soft limit %1"
+    CLIPPED_TO_UPPER_SOFT_LIMIT = "clipped to the upper soft limit %1"
     SIMULATION_REFUSED = "the simulation refused: %1"
     HOMING_REFUSED = "homing refused: %1"
     HOMING_AROUND_BOARD = "a board is on the table: moving clear of it before homing"
@@ -128,6 +137,40 @@ class Reason(enum.Enum):
         "once at rest"
     )
     HANDWHEEL_JUMPED = "the counter moved %1 counts in one read; a hand turns at most %2"
+
+    # What an alarm found, after its title (the axis is the alarm's source).
+    NO_FEEDBACK_DETAIL = "axis %1: no feedback from its drive"
+    DRIVE_IN_FAULT_DETAIL = "axis %1, fault code %2"
+    DRIVE_NOT_ENABLED_DETAIL = "axis %1: drive not enabled while moving (%2)"
+    FOLLOWING_ERROR_DETAIL = "axis %1: following error %2 %3 exceeds %4 %3"
+    LIMIT_POSITIVE_DETAIL = "axis %1: positive limit switch at %2 %3"
+    LIMIT_NEGATIVE_DETAIL = "axis %1: negative limit switch at %2 %3"
+    SOFT_LIMIT_DETAIL = "axis %1: setpoint %2 %3 outside the travel %4 to %5 %3"
+    EMCY_FOLLOWING_ERROR = "following error"
+    EMCY_SENSOR = "position sensor"
+    EMCY_HEARTBEAT = "heartbeat or life guard"
+    EMCY_OVERCURRENT = "over-current"
+    EMCY_OVERVOLTAGE = "DC link over-voltage"
+    EMCY_OVERTEMPERATURE = "drive over-temperature"
+    EMCY_LIMIT_SWITCH = "limit switch"
+    GUARD_OPENED = "the guard was opened"
+    HOME_LOST_DETAIL = "an axis lost its home position"
+    RECORDS_WAITING_DETAIL = "the oldest has waited %1 s"
+    PART_SENSOR_OFF = "the part-present sensor went off during the cycle"
+    PARTLY_CUT_GONE = "the partly cut board is no longer on the table"
+    CENTERING_EXTENDED = "centering device not extended after %1 s"
+    CENTERING_RETRACTED = "centering device not retracted after %1 s"
+    CLAMPS_CLOSED = "clamps not closed after %1 s"
+    CLAMPS_OPENED = "clamps not open after %1 s"
+    SPINDLE_RUNNING = "spindle not running after %1 s"
+    SPINDLE_FEEDBACK_LOST = "the spindle's running signal went off"
+    GAUGE_NO_READING_DETAIL = "no reading within %1 s"
+    DRIVE_FAULT_WHILE_HOMING = "axis %1: drive fault %2 while homing"
+    DRIVE_DID_NOT_ENABLE_DETAIL = "axis %1: drive did not enable within %2 s"
+    HOMING_DID_NOT_START = "axis %1: homing did not start within %2 s"
+    HOME_SWITCH_NOT_FOUND = "axis %1: homing ended without finding the home switch"
+    HOMING_TIMEOUT = "axis %1: not homed after %2 s"
+    JOG_NOT_REFRESHED_DETAIL = "axis %1 stopped: the screen stopped confirming the jog"
 
 
 def fill(template: str, args: tuple[str, ...]) -> str:

@@ -63,6 +63,8 @@ class AlarmView:
     raised_at: float  # epoch seconds
     severity: str  # "fault" (stops the machine) or "warning"
     arguments: tuple[AlarmArgument, ...] = ()
+    detail: Refusal | None = None  # what was found, for the screens to translate
+    technical: str = ""  # a device's own words (English), for the alarm's details
 
 
 @dataclass(frozen=True)
@@ -163,6 +165,7 @@ class MachineSnapshot:
     barrel: BarrelView | None = None  # the barrel being raised (None: single staves)
     # Where the last finished cycle's seconds went: (timed step name, seconds), in order.
     last_step_times_s: tuple[tuple[str, float], ...] = ()
+    message_serial: int = 0  # counts every message given, so a repeated one is seen as new
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:

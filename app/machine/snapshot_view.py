@@ -46,6 +46,7 @@ class MachineController(Protocol):
     io_points: tuple[IoPoint, ...]
     pendant_jog: PendantJog
     barrel: BarrelSet | None
+    message_serial: int
 
     @property
     def pieces_shift(self) -> int: ...
@@ -143,6 +144,7 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         allowed=allowed_commands(c.facts()),
         message=c.message,
         io_points=c.io_points,
+        message_serial=c.message_serial,
         barrel=barrel_view(c.barrel),
         last_step_times_s=tuple(c.last_step_times_s.items()),
     )

@@ -11,8 +11,10 @@ Checked every period:
 
 * the E-stop chain (``estop_ok`` false: alarm E001, state EMERGENCY_STOP);
 * the guard, opened while something moves (E002);
-* every drive in FAULT: E012 if a limit switch is active, E011 for a following-error fault
-  (CiA 402 emergency code 0x8611), otherwise E010; a drive out of FAULT clears those;
+* every drive in FAULT: E012 if a limit switch is active (or its fault code says so), E011
+  for a following-error fault (CiA 402 emergency code 0x8611), otherwise E010; a drive out
+  of FAULT clears those. One cause gives one alarm: the feedback checks below add nothing
+  that a faulted drive's alarm already says about its axis;
 * while the automatic cycle moves (``check_feedback``): feedback present (E020), drive fault
   (E010), drive enabled (E013), following error within its limit (E011), limit switches
   (E012), the setpoint within the soft limits (E050), and every axis still homed (E016).
@@ -27,20 +29,35 @@ from dataclasses import dataclass
 
 from app.config import AxisConfig
 from app.drivers.contracts import AxisFeedback, InputImage
-from app.machine.alarms import AlarmCode
+from app.machine.alarms import AlarmCode, AlarmDetail
+from app.machine.refusals import Reason, Refusal, refusal
 from app.machine.snapshot import AlarmArgument
 from app.machine.states import MOVING_STATES, MachineState
 
 FOLLOWING_ERROR_FAULT = 0x8611  # CiA 402 "following error" emergency code
-EMERGENCY_TEXTS = {
-    0x8611: "following error",
-    0x7300: "sensor",
-    0x8130: "heartbeat / life guard",
-    0x2310: "over-current",
-    0x3210: "DC link over-voltage",
-    0x4310: "drive over-temperature",
-    0xFF01: "limit switch",
+EMERGENCY_REASONS = {
+    0x8611: Reason.EMCY_FOLLOWING_ERROR,
+    0x7300: Reason.EMCY_SENSOR,
+    0x8130: Reason.EMCY_HEARTBEAT,
+    0x2310: Reason.EMCY_OVERCURRENT,
+    0x3210: Reason.EMCY_OVERVOLTAGE,
+    0x4310: Reason.EMCY_OVERTEMPERATURE,
+    0xFF01: Reason.EMCY_LIMIT_SWITCH,
 }
+LIMIT_SWITCH_FAULTS = frozenset({0xFF01})
+
+
+def fault_code_text(fault_code: int) -> str:
+    return f"0x{fault_code:04X}"
+
+
+def fault_detail(axis: str, fault_code: int) -> Refusal:
+    """A drive's fault code, with its meaning where CiA 402 gives one."""
+    reason = EMERGENCY_REASONS.get(fault_code)
+    causes = (Refusal(reason),) if reason is not None else ()
+    return Refusal(Reason.DRIVE_IN_FAULT_DETAIL, (axis, fault_code_text(fault_code)), causes)
+
+
 DRIVE_FAULT_ALARMS = (AlarmCode.DRIVE_FAULT, AlarmCode.FOLLOWING_ERROR, AlarmCode.LIMIT_SWITCH)
 
 
@@ -62,7 +79,7 @@ class Violation:
     kind: ViolationKind
     value: float
     limit: float
-    message: str
+    message: Refusal
 
 
 def check_feedback(
@@ -92,7 +109,7 @@ def check_feedback(
                     ViolationKind.NO_FEEDBACK,
                     math.nan,
                     math.nan,
-                    f"axis {name}: no feedback this period",
+                    refusal(Reason.NO_FEEDBACK_DETAIL, name),
                 )
             )
             continue
@@ -104,8 +121,7 @@ def check_feedback(
                     ViolationKind.DRIVE_FAULT,
                     float(fb.fault_code),
                     0.0,
-                    f"axis {name}: drive in {fb.power_state.value} (fault code "
-                    f"0x{fb.fault_code:04X})",
+                    fault_detail(name, fb.fault_code),
                 )
             )
         elif motion_active and not fb.enabled:
@@ -115,8 +131,7 @@ def check_feedback(
                     ViolationKind.NOT_ENABLED,
                     float(fb.statusword),
                     0.0,
-                    f"axis {name}: drive in {fb.power_state.value} while moving, "
-                    "operation enabled required",
+                    refusal(Reason.DRIVE_NOT_ENABLED_DETAIL, name, fb.power_state.value),
                 )
             )
         if abs(fb.following_error) > config.following_error_limit:
@@ -126,8 +141,13 @@ def check_feedback(
                     ViolationKind.FOLLOWING_ERROR,
                     fb.following_error,
                     config.following_error_limit,
-                    f"axis {name}: following error {fb.following_error:.3f} {unit} exceeds "
-                    f"{config.following_error_limit:g} {unit}",
+                    refusal(
+                        Reason.FOLLOWING_ERROR_DETAIL,
+                        name,
+                        f"{fb.following_error:.3f}",
+                        unit,
+                        config.following_error_limit,
+                    ),
                 )
             )
         if fb.limit_positive:
@@ -137,7 +157,7 @@ def check_feedback(
                     ViolationKind.LIMIT_POSITIVE,
                     fb.position,
                     config.max_position,
-                    f"axis {name}: positive limit switch at {fb.position:.3f} {unit}",
+                    refusal(Reason.LIMIT_POSITIVE_DETAIL, name, f"{fb.position:.3f}", unit),
                 )
             )
         if fb.limit_negative:
@@ -147,7 +167,7 @@ def check_feedback(
                     ViolationKind.LIMIT_NEGATIVE,
                     fb.position,
                     config.min_position,
-                    f"axis {name}: negative limit switch at {fb.position:.3f} {unit}",
+                    refusal(Reason.LIMIT_NEGATIVE_DETAIL, name, f"{fb.position:.3f}", unit),
                 )
             )
         if setpoint is not None and name in setpoint:
@@ -162,8 +182,14 @@ def check_feedback(
                         ViolationKind.SOFT_LIMIT,
                         target,
                         bound,
-                        f"axis {name}: setpoint {target:.3f} {unit} outside the soft limits "
-                        f"{config.min_position:g} .. {config.max_position:g} {unit}",
+                        refusal(
+                            Reason.SOFT_LIMIT_DETAIL,
+                            name,
+                            f"{target:.3f}",
+                            unit,
+                            config.min_position,
+                            config.max_position,
+                        ),
                     )
                 )
     return violations
@@ -173,6 +199,16 @@ def _outside(position: float, config: AxisConfig) -> float:
     """How far ``position`` lies outside the soft limits (0 inside)."""
     return max(config.min_position - position, position - config.max_position, 0.0)
 
+
+# What a faulted drive's own alarm (E010, E011 or E012) already says about its axis.
+FAULT_KINDS = frozenset(
+    {
+        ViolationKind.DRIVE_FAULT,
+        ViolationKind.FOLLOWING_ERROR,
+        ViolationKind.LIMIT_POSITIVE,
+        ViolationKind.LIMIT_NEGATIVE,
+    }
+)
 
 VIOLATION_ALARMS = {
     ViolationKind.NO_FEEDBACK: AlarmCode.COMMUNICATION_LOST,
@@ -217,7 +253,7 @@ class Finding:
 
     code: AlarmCode
     source: str
-    detail: str = ""
+    detail: AlarmDetail = ""
     arguments: tuple[AlarmArgument, ...] = ()
 
 
@@ -244,7 +280,7 @@ class Motion:
 
 def drive_fault_code(fb: AxisFeedback) -> AlarmCode:
     """The alarm for a drive in FAULT: a limit switch, a following error, or any other."""
-    if fb.limit_positive or fb.limit_negative:
+    if fb.limit_positive or fb.limit_negative or fb.fault_code in LIMIT_SWITCH_FAULTS:
         return AlarmCode.LIMIT_SWITCH
     if fb.fault_code == FOLLOWING_ERROR_FAULT:
         return AlarmCode.FOLLOWING_ERROR
@@ -268,14 +304,13 @@ def supervise(
         not motion.cycle_active or motion.cycle_moving or motion.homing
     )
     if not inputs.guard_closed and something_moves:
-        faults.append(Finding(AlarmCode.GUARD_OPEN, "guard", "guard opened"))
+        faults.append(Finding(AlarmCode.GUARD_OPEN, "guard", Refusal(Reason.GUARD_OPENED)))
     elif inputs.guard_closed:
         normal.append((AlarmCode.GUARD_OPEN, "guard"))
     for name, fb in feedback.items():
         if fb.faulted:
-            text = EMERGENCY_TEXTS.get(fb.fault_code, "")
-            detail = f"fault code 0x{fb.fault_code:04X} {text}".strip()
             arguments = (AlarmArgument("axis", name), AlarmArgument("fault_code", fb.fault_code))
+            detail = fault_detail(name, fb.fault_code)
             faults.append(Finding(drive_fault_code(fb), name, detail, arguments))
         else:
             # Out of FAULT: those conditions are normal again. E013 is an event, cleared
@@ -283,6 +318,8 @@ def supervise(
             normal.extend((code, name) for code in DRIVE_FAULT_ALARMS)
     if motion.cycle_moving:
         for violation in check_feedback(feedback, setpoint, axes):
+            if violation.kind in FAULT_KINDS and feedback[violation.axis].faulted:
+                continue  # one cause, one alarm: the drive's fault above already names it
             faults.append(
                 Finding(
                     VIOLATION_ALARMS[violation.kind],
@@ -292,5 +329,5 @@ def supervise(
                 )
             )
         if not (feedback and all(fb.homed for fb in feedback.values())):
-            faults.append(Finding(AlarmCode.HOME_LOST, "axes", "an axis lost its home position"))
+            faults.append(Finding(AlarmCode.HOME_LOST, "axes", Refusal(Reason.HOME_LOST_DETAIL)))
     return Verdict(estop, tuple(faults), tuple(normal))

@@ -30,6 +30,8 @@ ROWS: list[tuple[cmd.Command, dict[str, object], Reason | None]] = [
     (cmd.Start(), {}, None),
     (cmd.Start(), {"state": S.ERROR}, R.LATCHED_ERROR),
     (cmd.Start(), {"state": S.EMERGENCY_STOP}, R.LATCHED_ESTOP),
+    # while the button is still pressed Reset is refused: the hint must not say "press Reset"
+    (cmd.Start(), {"state": S.EMERGENCY_STOP, "inputs": ESTOP}, R.LATCHED_ESTOP_PRESSED),
     (cmd.Start(), {"state": S.POWER_UP}, R.STARTING_UP),
     (cmd.Start(), {"state": S.MANUAL}, R.LEAVE_MANUAL_FIRST),
     (cmd.Start(), {"state": S.AUTOMATIC}, R.CYCLE_RUNNING),

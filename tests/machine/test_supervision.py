@@ -9,6 +9,7 @@ import pytest
 
 from app.drivers.contracts import AxisFeedback, InputImage
 from app.machine.alarms import AlarmCode
+from app.machine.refusals import Reason, Refusal
 from app.machine.snapshot import AlarmArgument
 from app.machine.states import MachineState
 from app.machine.supervision import (
@@ -51,7 +52,8 @@ def test_each_violation_names_the_axis(axis, change, kind, text) -> None:
     feedback[axis] = replace(feedback[axis], **change)
     violations = check_feedback(feedback, SETPOINT, CONFIG.axes)
     assert [(v.axis, v.kind) for v in violations] == [(axis, kind)]
-    assert violations[0].message.startswith(f"axis {axis}:") and text in violations[0].message
+    message = str(violations[0].message)
+    assert message.startswith(f"axis {axis}") and text in message
 
 
 def test_not_enabled_is_only_a_violation_while_moving_and_missing_feedback_is() -> None:
@@ -135,7 +137,8 @@ def test_an_open_estop_chain_stops_whatever_the_state() -> None:
 )
 def test_the_guard_faults_only_while_something_moves(motion: Motion, fault: bool) -> None:
     result = verdict(InputImage(guard_closed=False), motion=motion)
-    expected = (Finding(AlarmCode.GUARD_OPEN, "guard", "guard opened"),) if fault else ()
+    opened = Refusal(Reason.GUARD_OPENED)
+    expected = (Finding(AlarmCode.GUARD_OPEN, "guard", opened),) if fault else ()
     assert result.faults == expected
     assert (AlarmCode.GUARD_OPEN, "guard") not in result.normal
 
@@ -155,12 +158,22 @@ def test_a_drive_in_fault_is_named_by_its_cause(
     feedback = {**HOMED, "Y": replace(HOMED["Y"], statusword=FAULT, **changes)}
     (finding,) = verdict(feedback=feedback).faults
     assert (finding.code, finding.source) == (code, "Y")
-    assert finding.detail.startswith(f"fault code 0x{changes['fault_code']:04X}")
+    assert str(finding.detail).startswith(f"axis Y, fault code 0x{changes['fault_code']:04X}")
     assert finding.arguments == (
         AlarmArgument("axis", "Y"),
         AlarmArgument("fault_code", changes["fault_code"]),
     )
     assert not any(source == "Y" for _, source in verdict(feedback=feedback).normal)
+
+
+@pytest.mark.parametrize("flag", [True, False])
+def test_a_limit_switch_while_cutting_gives_one_alarm(flag: bool) -> None:
+    """The drive's fault and the feedback check see the same switch: one cause, one alarm
+    (E012, whether the drive reports the switch's input or only its fault code)."""
+    tripped = replace(HOMED["X"], statusword=FAULT, fault_code=0xFF01, limit_positive=flag)
+    faults = verdict(feedback={**HOMED, "X": tripped}, motion=CUTTING).faults
+    assert [(f.code, f.source) for f in faults] == [(AlarmCode.LIMIT_SWITCH, "X")]
+    assert str(faults[0].detail) == "axis X, fault code 0xFF01: limit switch"
 
 
 def test_the_moving_cycle_checks_the_feedback_and_the_home() -> None:

@@ -259,10 +259,10 @@ class Jogger:
         reason = None
         if target > self._max and direction > 0:
             target = max(self._max, base)
-            reason = refusal(Reason.CLIPPED_TO_SOFT_LIMIT, "max_position", self._max)
+            reason = refusal(Reason.CLIPPED_TO_UPPER_SOFT_LIMIT, self._max)
         elif target < self._min and direction < 0:
             target = min(self._min, base)
-            reason = refusal(Reason.CLIPPED_TO_SOFT_LIMIT, "min_position", self._min)
+            reason = refusal(Reason.CLIPPED_TO_LOWER_SOFT_LIMIT, self._min)
         if target == base:
             return JogResult(False, None, refusal(Reason.AT_SOFT_LIMIT, self.axis))
         self._mode = JogMode.STEP
@@ -303,16 +303,12 @@ class Jogger:
         p = self.position
         if direction > 0 and p >= self._max - _LIMIT_TOLERANCE:
             if p > self._max + _LIMIT_TOLERANCE:
-                return refusal(
-                    Reason.BEYOND_SOFT_LIMIT, self.axis, "max_position", self._max, f"{p:.3f}"
-                )
-            return refusal(Reason.AT_SOFT_LIMIT_VALUE, self.axis, "max_position", self._max)
+                return refusal(Reason.BEYOND_UPPER_SOFT_LIMIT, self.axis, self._max, f"{p:.3f}")
+            return refusal(Reason.AT_UPPER_SOFT_LIMIT, self.axis, self._max)
         if direction < 0 and p <= self._min + _LIMIT_TOLERANCE:
             if p < self._min - _LIMIT_TOLERANCE:
-                return refusal(
-                    Reason.BEYOND_SOFT_LIMIT, self.axis, "min_position", self._min, f"{p:.3f}"
-                )
-            return refusal(Reason.AT_SOFT_LIMIT_VALUE, self.axis, "min_position", self._min)
+                return refusal(Reason.BEYOND_LOWER_SOFT_LIMIT, self.axis, self._min, f"{p:.3f}")
+            return refusal(Reason.AT_LOWER_SOFT_LIMIT, self.axis, self._min)
         return None
 
     def _input(self, acceleration: float | None = None) -> InputParameter:
