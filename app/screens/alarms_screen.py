@@ -24,13 +24,26 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.data.records import AlarmEventFilter
+from app.data.records import AlarmEvent, AlarmEventFilter
 from app.machine.alarms import CATALOGUE
 from app.machine.commands import Acknowledge, Reset
 from app.machine.snapshot import AlarmState, AlarmView, MachineSnapshot
+from app.screens.alarm_detail import (
+    AlarmDetailOverlay,
+    AlarmFacts,
+    facts_of_event,
+    facts_of_view,
+    history_filter,
+)
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_table_time
-from app.screens.texts import alarm_state_text, alarm_text, history_state_text
+from app.screens.texts import (
+    alarm_line,
+    alarm_state_text,
+    alarm_text,
+    alarm_title,
+    history_state_text,
+)
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay
 from app.screens.widgets.readouts import styled_label
@@ -78,6 +91,8 @@ class AlarmsScreen(Screen):
         self.source_filter: str | None = None
         self._active_key: tuple[object, ...] = ()
         self.history_count = 0
+        self.active_rows: tuple[AlarmView, ...] = ()
+        self.history_rows: list[AlarmEvent] = []
 
         # -- active alarms -------------------------------------------------------------------
         active_panel = QFrame()
@@ -92,6 +107,7 @@ class AlarmsScreen(Screen):
         header.addWidget(self.ack_all_button)
         header.addWidget(self.reset_button)
         self.active_table = _table("activeAlarms", 6)
+        self.active_table.cellClicked.connect(self.open_active)
         self.none_label = styled_label("", "caption", "noAlarmsLabel")
         active_layout = QVBoxLayout(active_panel)
         active_layout.setContentsMargins(10, 6, 10, 8)
@@ -122,6 +138,7 @@ class AlarmsScreen(Screen):
         filters.addWidget(self.code_button)
         filters.addWidget(self.source_button)
         self.history_table = _table("alarmHistory", 6)
+        self.history_table.cellClicked.connect(self.open_history)
         history_layout = QVBoxLayout(history_panel)
         history_layout.setContentsMargins(10, 6, 10, 8)
         history_layout.addLayout(filters)
@@ -211,6 +228,7 @@ class AlarmsScreen(Screen):
 
     def _fill_active(self, alarms: tuple[AlarmView, ...]) -> None:
         table = self.active_table
+        self.active_rows = alarms
         table.setRowCount(len(alarms))
         self.none_label.setVisible(not alarms)
         for row, alarm in enumerate(alarms):
@@ -218,7 +236,7 @@ class AlarmsScreen(Screen):
             values = (
                 format_table_time(moment),
                 alarm.code,
-                alarm_text(alarm.code, alarm.text),
+                alarm_line(alarm),
                 alarm.source,
                 alarm_state_text(alarm.state),
             )
@@ -250,6 +268,31 @@ class AlarmsScreen(Screen):
                 return widget
         return None
 
+    # -- one alarm's details -----------------------------------------------------------------
+
+    def open_active(self, row: int, _column: int = 0) -> AlarmDetailOverlay | None:
+        """Tapping an active alarm's row: its whole text; Acknowledge there when it waits."""
+        if not 0 <= row < len(self.active_rows):
+            return None
+        alarm = self.active_rows[row]
+        needs_ack = alarm.state in (AlarmState.ACTIVE_UNACKED, AlarmState.RTN_UNACKED)
+        overlay = self._open_detail(facts_of_view(alarm), needs_ack)
+        overlay.finished.connect(
+            lambda ok: self.context.send(Acknowledge(alarm.alarm_id)) if ok else None
+        )
+        return overlay
+
+    def open_history(self, row: int, _column: int = 0) -> AlarmDetailOverlay | None:
+        if not 0 <= row < len(self.history_rows):
+            return None
+        return self._open_detail(facts_of_event(self.history_rows[row]), False)
+
+    def _open_detail(self, facts: AlarmFacts, acknowledge: bool) -> AlarmDetailOverlay:
+        events = self.context.database.list_alarm_events(history_filter(facts))
+        overlay = AlarmDetailOverlay(facts, events, acknowledge=acknowledge)
+        self.context.open(overlay)
+        return overlay
+
     # -- history -------------------------------------------------------------------------------
 
     def activated(self) -> None:
@@ -262,9 +305,7 @@ class AlarmsScreen(Screen):
 
     def choose_code(self) -> None:
         choices: list[tuple[str, str | None]] = [(self.tr("All codes"), None)]
-        choices += [
-            (f"{code}  {alarm_text(code, d.text)}", code) for code, d in sorted(CATALOGUE.items())
-        ]
+        choices += [(f"{code}  {alarm_title(code)}", code) for code in sorted(CATALOGUE)]
         overlay = ChoiceOverlay(self.tr("Alarm code"), choices, current=self.code_filter)
         overlay.chosen.connect(self.set_code_filter)
         self.context.open(overlay)
@@ -298,6 +339,7 @@ class AlarmsScreen(Screen):
     def refresh_history(self) -> None:
         events = self.context.database.list_alarm_events(self.current_filter())
         table = self.history_table
+        self.history_rows = events
         table.setRowCount(len(events))
         for row, event in enumerate(events):
             values = (

@@ -1,9 +1,9 @@
 """Every English text the screens show that comes from another layer's catalogue.
 
-Why collected here: alarm titles, refusal reasons (the templates of
-``app.machine.refusals.Reason``) and parameter descriptions are written in English by the
-machine and data layers (no Qt there); the screens translate them by their English text.
-This module lists them all, from the catalogues themselves, so that
+Why collected here: alarm titles, descriptions, causes and remedies, refusal reasons (the
+templates of ``app.machine.refusals.Reason``) and parameter descriptions are written in
+English by the machine and data layers (no Qt there); the screens translate them by their
+English text. This module lists them all, from the catalogues themselves, so that
 ``resources/translations/update.py`` can put them into the .ts files and a test can check that
 each one has a Slovenian translation; a new alarm or rule then fails that test instead of
 silently appearing in English.
@@ -12,7 +12,7 @@ silently appearing in English.
 from __future__ import annotations
 
 from app.data.parameters import PARAMETERS
-from app.machine.alarms import CATALOGUE
+from app.machine.alarms import CATALOGUE, AlarmDefinition
 from app.machine.refusals import Reason
 from app.screens.texts import ALARM_TEXT_CONTEXT, MACHINE_TEXT_CONTEXT, PARAMETER_CONTEXT
 
@@ -20,11 +20,16 @@ from app.screens.texts import ALARM_TEXT_CONTEXT, MACHINE_TEXT_CONTEXT, PARAMETE
 SCREEN_MACHINE_TEXTS: tuple[str, ...] = ("no connection to the machine",)
 
 
+def alarm_texts(definition: AlarmDefinition) -> tuple[str, ...]:
+    """Every text of one alarm: title, description, causes and remedy."""
+    return (definition.text, definition.description, *definition.causes, definition.remedy)
+
+
 def catalogue_texts() -> dict[str, list[str]]:
     """Context -> the English texts in it, sorted."""
     return {
         MACHINE_TEXT_CONTEXT: sorted({r.value for r in Reason} | set(SCREEN_MACHINE_TEXTS)),
-        ALARM_TEXT_CONTEXT: sorted({d.text for d in CATALOGUE.values()}),
+        ALARM_TEXT_CONTEXT: sorted({text for d in CATALOGUE.values() for text in alarm_texts(d)}),
         PARAMETER_CONTEXT: sorted({spec.description for spec in PARAMETERS}),
     }
 

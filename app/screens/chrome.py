@@ -11,7 +11,7 @@ from PySide6.QtCore import QDateTime, Qt, Signal
 from PySide6.QtWidgets import QButtonGroup, QFrame, QHBoxLayout, QPushButton, QSizePolicy, QWidget
 
 from app.machine.snapshot import AlarmState, MachineSnapshot
-from app.screens.texts import alarm_text, state_text
+from app.screens.texts import alarm_line, state_text
 from app.screens.theme import set_style_property
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.lamp import StatusLamp, lamp_color
@@ -97,7 +97,7 @@ class AlarmBanner(QPushButton):
         else:
             severity = "warning" if newest.severity == "warning" else "fault"
         set_style_property(self, "severity", severity)
-        text = f"⚠  {newest.code}  {alarm_text(newest.code, newest.text)}"
+        text = f"⚠  {newest.code}  {alarm_line(newest)}"
         if len(alarms) > 1:
             text += "   " + more_text.replace("%1", str(len(alarms) - 1))
         self.setText(text)

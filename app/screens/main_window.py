@@ -32,6 +32,7 @@ from app.screens.session import Session
 from app.screens.system_screen import SystemScreen
 from app.screens.texts import machine_text, role_text
 from app.screens.theme import scale_for_size, stylesheet
+from app.screens.top_bar_message import ExpiringMessage
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keypad import PinPad
 from app.screens.widgets.overlay import Overlay, top_overlay
@@ -68,6 +69,7 @@ class MainWindow(QMainWindow):
         self._shutting_down = False
         self.exit_code = 0
         self._notice = ""
+        self.machine_message = ExpiringMessage()
         self.session = Session(self._default_user, parent=self)
         self.pin_checker = PinChecker(database.path, parent=self)
 
@@ -118,7 +120,7 @@ class MainWindow(QMainWindow):
         self._notice_timer.timeout.connect(self.clear_notice)
         self._clock_timer = QTimer(self)
         self._clock_timer.setInterval(1000)
-        self._clock_timer.timeout.connect(self.top_bar.tick_clock)
+        self._clock_timer.timeout.connect(self._tick)
 
         self.nav.navigate.connect(self.show_screen)
         self.nav.shutdownClicked.connect(self.request_shutdown)
@@ -150,6 +152,7 @@ class MainWindow(QMainWindow):
         self.session.touch()
         if key != self.current_key:
             self.current_screen.deactivated()
+            self.machine_message.dismiss()
             self.current_key = key
             self.stack.setCurrentWidget(self.screens[key])
             screen = self.screens[key]
@@ -165,7 +168,7 @@ class MainWindow(QMainWindow):
     # -- machine -----------------------------------------------------------------------------
 
     def on_snapshot(self, snapshot: MachineSnapshot, force: bool = False) -> None:
-        self.top_bar.show_snapshot(snapshot, self._notice or machine_text(snapshot.message))
+        self.top_bar.show_snapshot(snapshot, self._notice or self._machine_text(snapshot))
         self.banner.show_alarms(snapshot, self.tr("(+%1 more)"), force)
         count = len(snapshot.alarms)
         alarms_text = self.tr("Alarms") + (f" ({count})" if count else "")
@@ -186,7 +189,18 @@ class MainWindow(QMainWindow):
     def clear_notice(self) -> None:
         self._notice = ""
         snapshot = self.poller.snapshot
-        self.top_bar.show_snapshot(snapshot, machine_text(snapshot.message) if snapshot else "")
+        self.top_bar.show_snapshot(snapshot, self._machine_text(snapshot) if snapshot else "")
+
+    def _tick(self) -> None:
+        """Every second: the clock, and the machine's message expires even while nothing
+        else changes."""
+        self.top_bar.tick_clock()
+        snapshot = self.poller.snapshot
+        if not self._notice and snapshot is not None:
+            self.top_bar.show_snapshot(snapshot, self._machine_text(snapshot))
+
+    def _machine_text(self, snapshot: MachineSnapshot) -> str:
+        return machine_text(self.machine_message.current(snapshot.message, snapshot.message_serial))
 
     # -- users and language ---------------------------------------------------------------------
 

@@ -49,7 +49,7 @@ from app.screens.widgets.dialogs import ConfirmOverlay
 from app.screens.widgets.hold_button import HoldButton
 from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.pendant_status import PendantStatus
-from app.screens.widgets.readouts import AxisReadout, set_text, styled_label
+from app.screens.widgets.readouts import AxisReadout, reason_label, set_text, styled_label
 
 STEP_SIZES: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0)
 TILT_STEP_RANGE_DEG = (0.1, 1.0)  # the tilt steps 0.1 or 1 degree: 0.01 is too fine, 10 too big
@@ -174,8 +174,6 @@ class ManualScreen(Screen):
         speed_panel.setObjectName("panel")
         speeds = QGridLayout(speed_panel)
         speeds.setContentsMargins(10, 6, 10, 8)
-        self.speed_caption = styled_label("", "title")
-        speeds.addWidget(self.speed_caption, 0, 0, 1, 3)
         self.speed_fields: dict[tuple[str, int], QPushButton] = {}
         self.speed_headers = (styled_label("", "caption"), styled_label("", "caption"))
         speeds.addWidget(self.speed_headers[0], 1, 1)
@@ -205,14 +203,18 @@ class ManualScreen(Screen):
         self.spindle_button.clicked.connect(self.toggle_spindle)
         actions.addWidget(self.clamps_button, 1, 0, 1, 2)
         actions.addWidget(self.spindle_button, 1, 2, 1, 2)
+        # Why homing, clamps or spindle are refused, under them: a touch screen shows no
+        # tooltips (the jog's reason is in the mode line above the cross).
+        self.reason_label = reason_label("manualReason")
 
         right = QVBoxLayout()
-        right.setSpacing(8)
+        right.setSpacing(6)
         right.addWidget(speed_panel)
         right.addWidget(self.step_caption)
         right.addLayout(steps)
         right.addWidget(self.home_caption)
         right.addLayout(actions)
+        right.addWidget(self.reason_label)
         right.addStretch(1)
 
         below = QHBoxLayout()
@@ -238,9 +240,8 @@ class ManualScreen(Screen):
         self.continuous_button.setText(self.tr("Continuous"))
         self.step_button.setText(self.tr("Step"))
         self.step_caption.setText(self.tr("Step size (mm for X-Y; tilt 0.1° or 1°)"))
-        self.speed_caption.setText(self.tr("Jog speed and acceleration"))
-        self.speed_headers[0].setText(self.tr("Speed"))
-        self.speed_headers[1].setText(self.tr("Acceleration"))
+        self.speed_headers[0].setText(self.tr("Jog speed"))
+        self.speed_headers[1].setText(self.tr("Jog acceleration"))
         self.home_caption.setText(self.tr("Home (find the reference position)"))
         for axis in ("X", "Y", "Z"):
             self.home_buttons[axis].setText(axis)
@@ -393,7 +394,10 @@ class ManualScreen(Screen):
     def update_snapshot(self, snapshot: MachineSnapshot, force: bool = False) -> None:
         self.snapshot = snapshot
         manual = snapshot.state is MachineState.MANUAL
-        if manual:
+        jog_reason = refusal(snapshot, "JogContinuous")
+        if manual and jog_reason:
+            set_text(self.mode_label, self.tr("Manual mode:") + " " + jog_reason)
+        elif manual:
             set_text(self.mode_label, self.tr("Manual mode: hold a button to jog."))
         else:
             reason = refusal(snapshot, "EnterManual")
@@ -404,12 +408,9 @@ class ManualScreen(Screen):
         self.enter_button.setEnabled(not refusal(snapshot, "EnterManual"))
         self.pendant_status.show_view(snapshot.pendant)
 
-        jog_reason = refusal(snapshot, "JogContinuous")
         for button in self.jog_buttons.values():
             if button.isEnabled() == bool(jog_reason):
                 button.setEnabled(not jog_reason)
-            if button.toolTip() != jog_reason:
-                button.setToolTip(jog_reason)
 
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             try:
@@ -427,7 +428,6 @@ class ManualScreen(Screen):
         home_reason = refusal(snapshot, "Home")
         for home in self.home_buttons.values():
             home.setEnabled(not home_reason)
-            home.setToolTip(home_reason)
 
         move_reason = refusal(snapshot, "MoveTo")
         self.go_to_button.setEnabled(not move_reason)
@@ -435,14 +435,14 @@ class ManualScreen(Screen):
 
         clamps_reason = refusal(snapshot, "SetClamps")
         self.clamps_button.setEnabled(not clamps_reason)
-        self.clamps_button.setToolTip(clamps_reason)
         closed = snapshot.outputs.clamps_close
         set_text(self.clamps_button, self.tr("Open clamps") if closed else self.tr("Close clamps"))
         spindle_reason = refusal(snapshot, SPINDLE_ON)
         spindle_on = snapshot.outputs.spindle_on
         # Switching the spindle off is always offered while it runs.
         self.spindle_button.setEnabled(spindle_on or not spindle_reason)
-        self.spindle_button.setToolTip("" if spindle_on else spindle_reason)
+        reasons = (home_reason, clamps_reason, "" if spindle_on else spindle_reason)
+        set_text(self.reason_label, "; ".join(dict.fromkeys(r for r in reasons if r)))
         set_text(
             self.spindle_button, self.tr("Spindle OFF") if spindle_on else self.tr("Spindle ON")
         )

@@ -262,6 +262,19 @@ def render_screenshots(
             window.page("system").show_group("limits")  # type: ignore[attr-defined]
             shoot("system-limits")
             window.session.logout()
+
+            # One alarm opened: its whole text, causes, remedy, details and history.
+            driver.send_and_wait(
+                InjectFault("drive_fault", "Y"), lambda s: bool(s.alarms), "drive fault raised"
+            )
+            window.show_screen("alarms")
+            alarms_screen = window.page("alarms")
+            driver.settle()
+            alarms_screen.open_active(0)  # type: ignore[attr-defined]
+            shoot("alarm-detail")
+            detail = window.overlay()
+            if detail is not None:
+                detail.reject()
         finally:
             window.poller.stop()
             window.close()

@@ -11,11 +11,14 @@ translation in the tests instead of silently staying English.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from PySide6.QtCore import QCoreApplication
 
 from app.data.users import Role
+from app.machine.alarms import definition_of
 from app.machine.refusals import Refusal
-from app.machine.snapshot import AlarmState
+from app.machine.snapshot import AlarmState, AlarmView
 from app.machine.states import CycleStep, MachineState
 
 
@@ -129,10 +132,26 @@ def machine_text(message: Refusal | str | None) -> str:
     return message.text(lambda template: _t(MACHINE_TEXT_CONTEXT, template))
 
 
-def alarm_text(code: str, text: str) -> str:
-    """An alarm's text: its catalogue title translated, the technical detail kept as is."""
-    from app.machine.alarms import definition_of
+def alarm_title(code: str) -> str:
+    """An alarm's title from the catalogue in the user's language (the code itself for a
+    code this machine does not raise)."""
+    definition = definition_of(code)
+    return _t(ALARM_TEXT_CONTEXT, definition.text) if definition is not None else code
 
+
+def alarm_line(alarm: AlarmView) -> str:
+    """An active alarm in one line: its title and what was found, both translated (a
+    device's technical words stay in the alarm's details)."""
+    title = alarm_title(alarm.code)
+    found = machine_text(alarm.detail)
+    if not found and alarm.technical:
+        found = alarm.source  # the device that reported it (its words are in the details)
+    return f"{title}: {found}" if found else title
+
+
+def alarm_text(code: str, text: str) -> str:
+    """A stored alarm line (the history keeps English): its catalogue title translated, the
+    recorded detail kept as it was written."""
     definition = definition_of(code)
     if definition is None:
         return text
@@ -140,6 +159,26 @@ def alarm_text(code: str, text: str) -> str:
     if text.startswith(definition.text):
         return title + text[len(definition.text) :]
     return title
+
+
+@dataclass(frozen=True)
+class AlarmHelp:
+    """What an alarm means, its probable causes and what to do, in the user's language."""
+
+    description: str
+    causes: tuple[str, ...]
+    remedy: str
+
+
+def alarm_help(code: str) -> AlarmHelp | None:
+    definition = definition_of(code)
+    if definition is None:
+        return None
+    return AlarmHelp(
+        _t(ALARM_TEXT_CONTEXT, definition.description),
+        tuple(_t(ALARM_TEXT_CONTEXT, cause) for cause in definition.causes),
+        _t(ALARM_TEXT_CONTEXT, definition.remedy),
+    )
 
 
 def parameter_text(english: str) -> str:

@@ -9,6 +9,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "%1+ limit switch is active: jog %1 in the - direction only"),
     QT_TRANSLATE_NOOP("MachineText", "%1- limit switch is active: jog %1 in the + direction only"),
     QT_TRANSLATE_NOOP("MachineText", "%1: Resume or Abandon"),
+    QT_TRANSLATE_NOOP("MachineText", "DC link over-voltage"),
     QT_TRANSLATE_NOOP("MachineText", "USB pendant ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP(
         "MachineText",
@@ -25,31 +26,58 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "a step of 0 moves nothing"),
     QT_TRANSLATE_NOOP("MachineText", "abandoning the board"),
     QT_TRANSLATE_NOOP("MachineText", "already in manual mode"),
+    QT_TRANSLATE_NOOP("MachineText", "an axis lost its home position"),
     QT_TRANSLATE_NOOP(
         "MachineText", "axes are not homed: abandon the board (their position is unknown)"
     ),
     QT_TRANSLATE_NOOP("MachineText", "axes are not homed: home the machine first"),
-    QT_TRANSLATE_NOOP("MachineText", "axis %1 is at its soft limit"),
-    QT_TRANSLATE_NOOP("MachineText", "axis %1 is at its soft limit %2 = %3"),
     QT_TRANSLATE_NOOP(
         "MachineText",
-        "axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed",
+        "axis %1 is above its upper soft limit %2 (at %3): only motion back toward the range is allowed",
+    ),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1 is at its lower soft limit %2"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1 is at its soft limit"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1 is at its upper soft limit %2"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
+        "axis %1 is below its lower soft limit %2 (at %3): only motion back toward the range is allowed",
     ),
     QT_TRANSLATE_NOOP("MachineText", "axis %1 is moving: release the jog first"),
     QT_TRANSLATE_NOOP("MachineText", "axis %1 is not allowed: X, Y or Z"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1 stopped: the screen stopped confirming the jog"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1, fault code %2"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: drive did not enable within %2 s"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: drive fault %2 while homing"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: drive not enabled while moving (%2)"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: following error %2 %3 exceeds %4 %3"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: homing did not start within %2 s"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: homing ended without finding the home switch"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: negative limit switch at %2 %3"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: no feedback from its drive"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: not homed after %2 s"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: positive limit switch at %2 %3"),
+    QT_TRANSLATE_NOOP("MachineText", "axis %1: setpoint %2 %3 outside the travel %4 to %5 %3"),
     QT_TRANSLATE_NOOP(
         "MachineText",
         "board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)",
     ),
     QT_TRANSLATE_NOOP("MachineText", "board abandoned: take it off"),
-    QT_TRANSLATE_NOOP("MachineText", "clipped to the soft limit %1 = %2"),
+    QT_TRANSLATE_NOOP("MachineText", "centering device not extended after %1 s"),
+    QT_TRANSLATE_NOOP("MachineText", "centering device not retracted after %1 s"),
+    QT_TRANSLATE_NOOP("MachineText", "clamps not closed after %1 s"),
+    QT_TRANSLATE_NOOP("MachineText", "clamps not open after %1 s"),
+    QT_TRANSLATE_NOOP("MachineText", "clipped to the lower soft limit %1"),
+    QT_TRANSLATE_NOOP("MachineText", "clipped to the upper soft limit %1"),
     QT_TRANSLATE_NOOP("MachineText", "close the guard first"),
     QT_TRANSLATE_NOOP("MachineText", "communication not restored"),
+    QT_TRANSLATE_NOOP("MachineText", "drive over-temperature"),
     QT_TRANSLATE_NOOP("MachineText", "emergency stop still pressed"),
     QT_TRANSLATE_NOOP("MachineText", "feed override %1 % is not allowed: 0 to 120 %"),
+    QT_TRANSLATE_NOOP("MachineText", "following error"),
     QT_TRANSLATE_NOOP("MachineText", "go to position refused: %1"),
     QT_TRANSLATE_NOOP("MachineText", "go to position: %1 = %2 is not allowed: %3 to %4"),
     QT_TRANSLATE_NOOP("MachineText", "handwheel ignored: it jogs only on the Manual screen"),
+    QT_TRANSLATE_NOOP("MachineText", "heartbeat or life guard"),
     QT_TRANSLATE_NOOP(
         "MachineText", "hold the enable button to jog with the handwheel or the joystick"
     ),
@@ -70,14 +98,20 @@ TEXTS = [
     ),
     QT_TRANSLATE_NOOP("MachineText", "joystick ignored: it jogs only on the Manual screen"),
     QT_TRANSLATE_NOOP("MachineText", "leave manual mode first"),
+    QT_TRANSLATE_NOOP("MachineText", "limit switch"),
     QT_TRANSLATE_NOOP("MachineText", "machine is busy (automatic): stop it first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is busy (homing): stop it first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is busy (stopping): stop it first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is in emergency stop: press Reset first"),
+    QT_TRANSLATE_NOOP(
+        "MachineText",
+        "machine is in emergency stop: release the emergency stop button, then press Reset",
+    ),
     QT_TRANSLATE_NOOP("MachineText", "machine is in error: press Reset first"),
     QT_TRANSLATE_NOOP("MachineText", "machine is still starting up"),
     QT_TRANSLATE_NOOP("MachineText", "no board is partly cut"),
     QT_TRANSLATE_NOOP("MachineText", "no connection to the machine"),
+    QT_TRANSLATE_NOOP("MachineText", "no reading within %1 s"),
     QT_TRANSLATE_NOOP("MachineText", "not in manual mode"),
     QT_TRANSLATE_NOOP("MachineText", "not possible while automatic"),
     QT_TRANSLATE_NOOP("MachineText", "not possible while homing"),
@@ -89,6 +123,8 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "nothing to reset"),
     QT_TRANSLATE_NOOP("MachineText", "only on the simulated machine"),
     QT_TRANSLATE_NOOP("MachineText", "open the Manual screen to jog"),
+    QT_TRANSLATE_NOOP("MachineText", "over-current"),
+    QT_TRANSLATE_NOOP("MachineText", "position sensor"),
     QT_TRANSLATE_NOOP("MachineText", "recipe %1 does not exist"),
     QT_TRANSLATE_NOOP("MachineText", "recipe %1 has a fixed tilt: it makes no barrel"),
     QT_TRANSLATE_NOOP(
@@ -105,6 +141,7 @@ TEXTS = [
     QT_TRANSLATE_NOOP("MachineText", "reset failed"),
     QT_TRANSLATE_NOOP("MachineText", "resuming the board"),
     QT_TRANSLATE_NOOP("MachineText", "select a recipe first"),
+    QT_TRANSLATE_NOOP("MachineText", "spindle not running after %1 s"),
     QT_TRANSLATE_NOOP(
         "MachineText",
         "step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)",
@@ -118,10 +155,14 @@ TEXTS = [
     QT_TRANSLATE_NOOP(
         "MachineText", "the counter moved %1 counts in one read; a hand turns at most %2"
     ),
+    QT_TRANSLATE_NOOP("MachineText", "the guard was opened"),
     QT_TRANSLATE_NOOP(
         "MachineText", "the handwheel is jogging: let it and the axes come to rest first"
     ),
     QT_TRANSLATE_NOOP("MachineText", "the joystick is jogging: let it go and the axes stop first"),
+    QT_TRANSLATE_NOOP("MachineText", "the oldest has waited %1 s"),
+    QT_TRANSLATE_NOOP("MachineText", "the part-present sensor went off during the cycle"),
+    QT_TRANSLATE_NOOP("MachineText", "the partly cut board is no longer on the table"),
     QT_TRANSLATE_NOOP(
         "MachineText", "the recipe selected before the restart cannot be read: select a recipe"
     ),
@@ -129,20 +170,111 @@ TEXTS = [
         "MachineText", "the screen is jogging: release it and let the axes stop first"
     ),
     QT_TRANSLATE_NOOP("MachineText", "the simulation refused: %1"),
+    QT_TRANSLATE_NOOP("MachineText", "the spindle's running signal went off"),
     QT_TRANSLATE_NOOP("MachineText", "unknown command"),
     QT_TRANSLATE_NOOP("MachineText", "wait until the cycle has ended"),
+    QT_TRANSLATE_NOOP("AlarmText", "A cable to the motor or its encoder is damaged."),
+    QT_TRANSLATE_NOOP("AlarmText", "A device answered but refused what the machine asked of it."),
+    QT_TRANSLATE_NOOP("AlarmText", "A device was replaced by another model or firmware."),
+    QT_TRANSLATE_NOOP("AlarmText", "A drive did not switch its power stage on when asked."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "A drive no longer knows where its axis is; the cut was stopped."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "A drive or encoder problem."),
+    QT_TRANSLATE_NOOP("AlarmText", "A drive or the I/O module lost its supply or restarted."),
     QT_TRANSLATE_NOOP("AlarmText", "A drive or the I/O refused a request"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "A drive or the I/O reported an event; the machine keeps going."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "A drive switched its power stage off while the axis was meant to move."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "A faulty or misadjusted sensor."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "A jog stopped because the screen no longer confirmed that its button is held."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "A limit switch is faulty or was hit by a board."),
+    QT_TRANSLATE_NOOP("AlarmText", "A network or bus cable is unplugged or broken."),
+    QT_TRANSLATE_NOOP("AlarmText", "A safety relay or a wire of the chain is open."),
+    QT_TRANSLATE_NOOP("AlarmText", "A servo drive reports a fault and has switched its motor off."),
+    QT_TRANSLATE_NOOP("AlarmText", "A software fault."),
+    QT_TRANSLATE_NOOP("AlarmText", "A switch between them failed."),
+    QT_TRANSLATE_NOOP("AlarmText", "A warning inside the device."),
+    QT_TRANSLATE_NOOP("AlarmText", "A wrong PIN was tried several times."),
+    QT_TRANSLATE_NOOP("AlarmText", "Air pressure too low."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "An axis did not find its home position within the expected time."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "An axis lags too far behind where it should be; it was stopped before it could go somewhere unexpected.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "An axis ran onto its end-of-travel switch and was stopped."),
+    QT_TRANSLATE_NOOP("AlarmText", "An axis stands where the approach cannot go round the board."),
+    QT_TRANSLATE_NOOP("AlarmText", "An emergency stop button is pressed."),
+    QT_TRANSLATE_NOOP("AlarmText", "An encoder signal was lost."),
+    QT_TRANSLATE_NOOP("AlarmText", "Another program holds the database."),
     QT_TRANSLATE_NOOP("AlarmText", "Axis lost its home position"),
     QT_TRANSLATE_NOOP("AlarmText", "Board removed during the cycle"),
     QT_TRANSLATE_NOOP("AlarmText", "Board too narrow to close the barrel"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Call a technician to free disk space or the database; the records are written once it answers.",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Call a technician with the code in the details; then press Reset."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Centering device did not reach its sensor"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Check the air pressure and the centering device, then press Reset."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Check the air pressure and the clamps, then press Reset."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Check the axis and its home switch, then press Reset and home again."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Check the cables and the supply of the device named in the details, then press Reset (it reconnects).",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Check the cutter and the motor protection. Press Reset, then resume or abandon the board.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Check the drive's display and its supply, then press Reset."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Check the emergency stop buttons and the drive's display, then press Reset."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Check the gauge and its cable, then press Reset: the board is measured again."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Check the gauge's display and cable, then press Reset."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Check the handwheel's cable and plug, then press Reset. If it repeats, call a technician.",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Check the spindle's motor protection switch, then press Reset."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Clamps did not reach their sensor"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Clear the axis, check that it moves freely, then press Reset. If it repeats, lower the feed or call a technician.",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Close the guard, check that nothing is in the way, then press Reset."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Communication with the drives or I/O lost"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Cut to fit, this board would leave a gap in the barrel that no stave can close.",
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Device event"),
     QT_TRANSLATE_NOOP("AlarmText", "Drive did not enable"),
     QT_TRANSLATE_NOOP("AlarmText", "Drive fault"),
     QT_TRANSLATE_NOOP("AlarmText", "Drive not enabled during motion"),
+    QT_TRANSLATE_NOOP("AlarmText", "Electrical noise on the handwheel's cable or a bad connector."),
     QT_TRANSLATE_NOOP("AlarmText", "Emergency stop"),
+    QT_TRANSLATE_NOOP("AlarmText", "Feed or acceleration set higher than the axis can follow."),
     QT_TRANSLATE_NOOP("AlarmText", "Following error too large"),
     QT_TRANSLATE_NOOP("AlarmText", "Guard open during motion"),
     QT_TRANSLATE_NOOP("AlarmText", "Handwheel count jumped further than a hand can turn it"),
@@ -150,17 +282,147 @@ TEXTS = [
     QT_TRANSLATE_NOOP("AlarmText", "Internal error in the machine process"),
     QT_TRANSLATE_NOOP("AlarmText", "Jog stopped: no refresh from the screen"),
     QT_TRANSLATE_NOOP("AlarmText", "Limit switch reached"),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Make sure nobody is in danger, release the button (turn it), then press Reset.",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Make sure the table is clear or the board is in place, then press Reset."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Measured width not allowed for this recipe"),
     QT_TRANSLATE_NOOP("AlarmText", "Move refused: it would cross the board"),
+    QT_TRANSLATE_NOOP("AlarmText", "Note the time and the details, press Reset, and tell service."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Over-current or over-temperature: the axis is stuck or overloaded."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "PIN entry locked after repeated wrong PINs"),
+    QT_TRANSLATE_NOOP("AlarmText", "Plug the gauge in again, then press Reset (it reconnects)."),
+    QT_TRANSLATE_NOOP("AlarmText", "Press Reset and home the machine before the next board."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Press Reset, jog the axis away from the switch on the Manual screen (the opposite direction only), then home the machine.",
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Press Reset, move the cutter clear of the board on the Manual screen, then start again.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Press and hold the jog button again."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Production and alarm records are kept on the side because the database is busy or missing; nothing is lost yet.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Read the details; call a technician if it repeats."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Read the fault code in the details, look at the axis for anything jammed, then press Reset. If it comes back, call a technician with the code.",
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Records waiting for the database"),
+    QT_TRANSLATE_NOOP("AlarmText", "Somebody opened the guard."),
     QT_TRANSLATE_NOOP("AlarmText", "Spindle did not start"),
     QT_TRANSLATE_NOOP("AlarmText", "Spindle stopped while cutting"),
+    QT_TRANSLATE_NOOP("AlarmText", "Supply voltage too high or too low."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Take the board off (or choose the right recipe), then press Reset."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Take the board off and check the recipe, then press Reset."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "Take the board off and check the recipe, then press Reset. If it repeats with a good recipe, call service with the details.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "Take the board off and put a wider one on, then press Reset."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The axis is blocked or runs stiffly (chips, a board in the way, dry guides)."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The axis was blocked or stopped during homing."),
+    QT_TRANSLATE_NOOP("AlarmText", "The axis was jogged past its range."),
+    QT_TRANSLATE_NOOP("AlarmText", "The board is in the way or the clamps are jammed."),
+    QT_TRANSLATE_NOOP("AlarmText", "The board is in the way or the device is jammed."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The board is narrower or wider than the recipe can cut; it was not cut."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The board is narrower than the barrel still needs."),
+    QT_TRANSLATE_NOOP("AlarmText", "The board is too narrow or too wide for this recipe."),
+    QT_TRANSLATE_NOOP("AlarmText", "The board is wider than the machine can cut."),
+    QT_TRANSLATE_NOOP("AlarmText", "The board was taken off or moved."),
+    QT_TRANSLATE_NOOP("AlarmText", "The centering device did not extend or retract in time."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The clamps did not close or open in time, as their sensor reports."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The computer no longer hears a drive or the I/O; the machine stopped."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The cut would need an axis beyond its travel; nothing moved there."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The device is configured differently from the machine's configuration."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The disk is full or slow."),
+    QT_TRANSLATE_NOOP("AlarmText", "The drive is in fault or has no supply."),
+    QT_TRANSLATE_NOOP("AlarmText", "The drive lost its supply."),
+    QT_TRANSLATE_NOOP("AlarmText", "The drive was switched off or restarted."),
+    QT_TRANSLATE_NOOP("AlarmText", "The drive's enable or safe torque off input dropped."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The emergency stop chain is open: every drive stopped and lost power."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The emergency stop chain or safe torque off is still open."),
+    QT_TRANSLATE_NOOP("AlarmText", "The gauge is not in contact with the board."),
+    QT_TRANSLATE_NOOP("AlarmText", "The gauge lost its supply."),
+    QT_TRANSLATE_NOOP("AlarmText", "The gauge reports its own error (out of range, no contact)."),
+    QT_TRANSLATE_NOOP("AlarmText", "The gauge's cable is loose."),
+    QT_TRANSLATE_NOOP("AlarmText", "The gauge's cable or adapter is unplugged."),
+    QT_TRANSLATE_NOOP("AlarmText", "The guard switch is loose or badly adjusted."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The guard was opened while an axis or the cutter moved; the machine stopped."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The handwheel or its counter input is faulty."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText",
+        "The handwheel's counter changed by more between two readings than a hand can turn it; nothing moved on that reading.",
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The home position is lost or wrong."),
+    QT_TRANSLATE_NOOP("AlarmText", "The home switch is faulty, dirty or out of place."),
+    QT_TRANSLATE_NOOP("AlarmText", "The machine could not compute the cut for this board."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The machine's software met a situation it does not handle; it stopped safely."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The motor protection tripped (a blunt cutter, too much feed)."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The part-present sensor lost the board while the cycle was using it."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The recipe's stave does not fit this machine."),
+    QT_TRANSLATE_NOOP("AlarmText", "The recipe's values give no shape for this width."),
+    QT_TRANSLATE_NOOP("AlarmText", "The screen was busy or frozen."),
+    QT_TRANSLATE_NOOP("AlarmText", "The sensor is dirty or misadjusted."),
+    QT_TRANSLATE_NOOP("AlarmText", "The spindle did not report running in time; nothing was cut."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The spindle stopped during a cut; the axes were stopped at once."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The spindle's contactor or its running signal is faulty."),
+    QT_TRANSLATE_NOOP("AlarmText", "The spindle's motor protection tripped."),
+    QT_TRANSLATE_NOOP("AlarmText", "The supply of the spindle dropped."),
+    QT_TRANSLATE_NOOP("AlarmText", "The touch was lost while holding the button."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The way to the cut would take the cutter through the board; nothing moved."
+    ),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The width gauge sent no measurement in time; the board was not cut."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The width gauge sent something that is not a width."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "The width gauge's connection is gone; no board can be measured."
+    ),
+    QT_TRANSLATE_NOOP("AlarmText", "The wrong recipe is selected."),
+    QT_TRANSLATE_NOOP(
+        "AlarmText", "Too many wrong PINs were entered; PIN entry waits before it accepts another."
+    ),
     QT_TRANSLATE_NOOP("AlarmText", "Tool path could not be planned"),
     QT_TRANSLATE_NOOP("AlarmText", "Tool path outside the axis travel"),
+    QT_TRANSLATE_NOOP("AlarmText", "Wait until the lock ends, then enter the right PIN."),
     QT_TRANSLATE_NOOP("AlarmText", "Width gauge disconnected"),
     QT_TRANSLATE_NOOP("AlarmText", "Width gauge gave no reading"),
     QT_TRANSLATE_NOOP("AlarmText", "Width gauge reading not understood"),
+    QT_TRANSLATE_NOOP("AlarmText", "Wrong serial settings or a faulty cable."),
     QT_TRANSLATE_NOOP(
         "Parameters", "Distance beyond the board's right end where the tilt changes sides"
     ),

@@ -2,9 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>AlarmDetailOverlay</name>
+    <message>
+        <location filename="../../app/screens/alarm_detail.py" line="+132" />
+        <source>What was found</source>
+        <translation>What was found</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Source: %1</source>
+        <translation>Source: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Kind: %1</source>
+        <translation>Kind: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Device reports: %1</source>
+        <translation>Device reports: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Probable causes</source>
+        <translation>Probable causes</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>What to do</source>
+        <translation>What to do</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>History</source>
+        <translation>History</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Acknowledge</source>
+        <translation>Acknowledge</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+</context>
+<context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+61" />
+        <location filename="../../app/screens/texts.py" line="+64" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -46,9 +94,144 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+134" />
+        <location filename="catalogue_strings.py" line="+176" />
+        <source>A cable to the motor or its encoder is damaged.</source>
+        <translation>A cable to the motor or its encoder is damaged.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A device answered but refused what the machine asked of it.</source>
+        <translation>A device answered but refused what the machine asked of it.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A device was replaced by another model or firmware.</source>
+        <translation>A device was replaced by another model or firmware.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A drive did not switch its power stage on when asked.</source>
+        <translation>A drive did not switch its power stage on when asked.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A drive no longer knows where its axis is; the cut was stopped.</source>
+        <translation>A drive no longer knows where its axis is; the cut was stopped.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A drive or encoder problem.</source>
+        <translation>A drive or encoder problem.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A drive or the I/O module lost its supply or restarted.</source>
+        <translation>A drive or the I/O module lost its supply or restarted.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>A drive or the I/O refused a request</source>
         <translation>A drive or the I/O refused a request</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A drive or the I/O reported an event; the machine keeps going.</source>
+        <translation>A drive or the I/O reported an event; the machine keeps going.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A drive switched its power stage off while the axis was meant to move.</source>
+        <translation>A drive switched its power stage off while the axis was meant to move.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A faulty or misadjusted sensor.</source>
+        <translation>A faulty or misadjusted sensor.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A jog stopped because the screen no longer confirmed that its button is held.</source>
+        <translation>A jog stopped because the screen no longer confirmed that its button is held.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A limit switch is faulty or was hit by a board.</source>
+        <translation>A limit switch is faulty or was hit by a board.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A network or bus cable is unplugged or broken.</source>
+        <translation>A network or bus cable is unplugged or broken.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A safety relay or a wire of the chain is open.</source>
+        <translation>A safety relay or a wire of the chain is open.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A servo drive reports a fault and has switched its motor off.</source>
+        <translation>A servo drive reports a fault and has switched its motor off.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A software fault.</source>
+        <translation>A software fault.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A switch between them failed.</source>
+        <translation>A switch between them failed.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A warning inside the device.</source>
+        <translation>A warning inside the device.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A wrong PIN was tried several times.</source>
+        <translation>A wrong PIN was tried several times.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Air pressure too low.</source>
+        <translation>Air pressure too low.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>An axis did not find its home position within the expected time.</source>
+        <translation>An axis did not find its home position within the expected time.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>An axis lags too far behind where it should be; it was stopped before it could go somewhere unexpected.</source>
+        <translation>An axis lags too far behind where it should be; it was stopped before it could go somewhere unexpected.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>An axis ran onto its end-of-travel switch and was stopped.</source>
+        <translation>An axis ran onto its end-of-travel switch and was stopped.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>An axis stands where the approach cannot go round the board.</source>
+        <translation>An axis stands where the approach cannot go round the board.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>An emergency stop button is pressed.</source>
+        <translation>An emergency stop button is pressed.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>An encoder signal was lost.</source>
+        <translation>An encoder signal was lost.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Another program holds the database.</source>
+        <translation>Another program holds the database.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -67,21 +250,101 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Call a technician to free disk space or the database; the records are written once it answers.</source>
+        <translation>Call a technician to free disk space or the database; the records are written once it answers.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Call a technician with the code in the details; then press Reset.</source>
+        <translation>Call a technician with the code in the details; then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Centering device did not reach its sensor</source>
         <translation>Centering device did not reach its sensor</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Check the air pressure and the centering device, then press Reset.</source>
+        <translation>Check the air pressure and the centering device, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Check the air pressure and the clamps, then press Reset.</source>
+        <translation>Check the air pressure and the clamps, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Check the axis and its home switch, then press Reset and home again.</source>
+        <translation>Check the axis and its home switch, then press Reset and home again.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Check the cables and the supply of the device named in the details, then press Reset (it reconnects).</source>
+        <translation>Check the cables and the supply of the device named in the details, then press Reset (it reconnects).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Check the cutter and the motor protection. Press Reset, then resume or abandon the board.</source>
+        <translation>Check the cutter and the motor protection. Press Reset, then resume or abandon the board.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Check the drive's display and its supply, then press Reset.</source>
+        <translation>Check the drive's display and its supply, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Check the emergency stop buttons and the drive's display, then press Reset.</source>
+        <translation>Check the emergency stop buttons and the drive's display, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Check the gauge and its cable, then press Reset: the board is measured again.</source>
+        <translation>Check the gauge and its cable, then press Reset: the board is measured again.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Check the gauge's display and cable, then press Reset.</source>
+        <translation>Check the gauge's display and cable, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Check the handwheel's cable and plug, then press Reset. If it repeats, call a technician.</source>
+        <translation>Check the handwheel's cable and plug, then press Reset. If it repeats, call a technician.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Check the spindle's motor protection switch, then press Reset.</source>
+        <translation>Check the spindle's motor protection switch, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Clamps did not reach their sensor</source>
         <translation>Clamps did not reach their sensor</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Clear the axis, check that it moves freely, then press Reset. If it repeats, lower the feed or call a technician.</source>
+        <translation>Clear the axis, check that it moves freely, then press Reset. If it repeats, lower the feed or call a technician.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Close the guard, check that nothing is in the way, then press Reset.</source>
+        <translation>Close the guard, check that nothing is in the way, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Communication with the drives or I/O lost</source>
         <translation>Communication with the drives or I/O lost</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Cut to fit, this board would leave a gap in the barrel that no stave can close.</source>
+        <translation>Cut to fit, this board would leave a gap in the barrel that no stave can close.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Device event</source>
         <translation>Device event</translation>
     </message>
@@ -102,8 +365,18 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Electrical noise on the handwheel's cable or a bad connector.</source>
+        <translation>Electrical noise on the handwheel's cable or a bad connector.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Emergency stop</source>
         <translation>Emergency stop</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Feed or acceleration set higher than the axis can follow.</source>
+        <translation>Feed or acceleration set higher than the axis can follow.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -142,6 +415,16 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Make sure nobody is in danger, release the button (turn it), then press Reset.</source>
+        <translation>Make sure nobody is in danger, release the button (turn it), then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Make sure the table is clear or the board is in place, then press Reset.</source>
+        <translation>Make sure the table is clear or the board is in place, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Measured width not allowed for this recipe</source>
         <translation>Measured width not allowed for this recipe</translation>
     </message>
@@ -152,13 +435,68 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Note the time and the details, press Reset, and tell service.</source>
+        <translation>Note the time and the details, press Reset, and tell service.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Over-current or over-temperature: the axis is stuck or overloaded.</source>
+        <translation>Over-current or over-temperature: the axis is stuck or overloaded.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>PIN entry locked after repeated wrong PINs</source>
         <translation>PIN entry locked after repeated wrong PINs</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Plug the gauge in again, then press Reset (it reconnects).</source>
+        <translation>Plug the gauge in again, then press Reset (it reconnects).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Press Reset and home the machine before the next board.</source>
+        <translation>Press Reset and home the machine before the next board.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Press Reset, jog the axis away from the switch on the Manual screen (the opposite direction only), then home the machine.</source>
+        <translation>Press Reset, jog the axis away from the switch on the Manual screen (the opposite direction only), then home the machine.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Press Reset, move the cutter clear of the board on the Manual screen, then start again.</source>
+        <translation>Press Reset, move the cutter clear of the board on the Manual screen, then start again.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Press and hold the jog button again.</source>
+        <translation>Press and hold the jog button again.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Production and alarm records are kept on the side because the database is busy or missing; nothing is lost yet.</source>
+        <translation>Production and alarm records are kept on the side because the database is busy or missing; nothing is lost yet.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Read the details; call a technician if it repeats.</source>
+        <translation>Read the details; call a technician if it repeats.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Read the fault code in the details, look at the axis for anything jammed, then press Reset. If it comes back, call a technician with the code.</source>
+        <translation>Read the fault code in the details, look at the axis for anything jammed, then press Reset. If it comes back, call a technician with the code.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Records waiting for the database</source>
         <translation>Records waiting for the database</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Somebody opened the guard.</source>
+        <translation>Somebody opened the guard.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -172,6 +510,296 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Supply voltage too high or too low.</source>
+        <translation>Supply voltage too high or too low.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Take the board off (or choose the right recipe), then press Reset.</source>
+        <translation>Take the board off (or choose the right recipe), then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Take the board off and check the recipe, then press Reset.</source>
+        <translation>Take the board off and check the recipe, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Take the board off and check the recipe, then press Reset. If it repeats with a good recipe, call service with the details.</source>
+        <translation>Take the board off and check the recipe, then press Reset. If it repeats with a good recipe, call service with the details.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Take the board off and put a wider one on, then press Reset.</source>
+        <translation>Take the board off and put a wider one on, then press Reset.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The axis is blocked or runs stiffly (chips, a board in the way, dry guides).</source>
+        <translation>The axis is blocked or runs stiffly (chips, a board in the way, dry guides).</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The axis was blocked or stopped during homing.</source>
+        <translation>The axis was blocked or stopped during homing.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The axis was jogged past its range.</source>
+        <translation>The axis was jogged past its range.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board is in the way or the clamps are jammed.</source>
+        <translation>The board is in the way or the clamps are jammed.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board is in the way or the device is jammed.</source>
+        <translation>The board is in the way or the device is jammed.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board is narrower or wider than the recipe can cut; it was not cut.</source>
+        <translation>The board is narrower or wider than the recipe can cut; it was not cut.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The board is narrower than the barrel still needs.</source>
+        <translation>The board is narrower than the barrel still needs.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board is too narrow or too wide for this recipe.</source>
+        <translation>The board is too narrow or too wide for this recipe.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board is wider than the machine can cut.</source>
+        <translation>The board is wider than the machine can cut.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The board was taken off or moved.</source>
+        <translation>The board was taken off or moved.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The centering device did not extend or retract in time.</source>
+        <translation>The centering device did not extend or retract in time.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The clamps did not close or open in time, as their sensor reports.</source>
+        <translation>The clamps did not close or open in time, as their sensor reports.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The computer no longer hears a drive or the I/O; the machine stopped.</source>
+        <translation>The computer no longer hears a drive or the I/O; the machine stopped.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The cut would need an axis beyond its travel; nothing moved there.</source>
+        <translation>The cut would need an axis beyond its travel; nothing moved there.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The device is configured differently from the machine's configuration.</source>
+        <translation>The device is configured differently from the machine's configuration.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The disk is full or slow.</source>
+        <translation>The disk is full or slow.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The drive is in fault or has no supply.</source>
+        <translation>The drive is in fault or has no supply.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The drive lost its supply.</source>
+        <translation>The drive lost its supply.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The drive was switched off or restarted.</source>
+        <translation>The drive was switched off or restarted.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The drive's enable or safe torque off input dropped.</source>
+        <translation>The drive's enable or safe torque off input dropped.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The emergency stop chain is open: every drive stopped and lost power.</source>
+        <translation>The emergency stop chain is open: every drive stopped and lost power.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The emergency stop chain or safe torque off is still open.</source>
+        <translation>The emergency stop chain or safe torque off is still open.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The gauge is not in contact with the board.</source>
+        <translation>The gauge is not in contact with the board.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The gauge lost its supply.</source>
+        <translation>The gauge lost its supply.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The gauge reports its own error (out of range, no contact).</source>
+        <translation>The gauge reports its own error (out of range, no contact).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The gauge's cable is loose.</source>
+        <translation>The gauge's cable is loose.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The gauge's cable or adapter is unplugged.</source>
+        <translation>The gauge's cable or adapter is unplugged.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The guard switch is loose or badly adjusted.</source>
+        <translation>The guard switch is loose or badly adjusted.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The guard was opened while an axis or the cutter moved; the machine stopped.</source>
+        <translation>The guard was opened while an axis or the cutter moved; the machine stopped.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The handwheel or its counter input is faulty.</source>
+        <translation>The handwheel or its counter input is faulty.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The handwheel's counter changed by more between two readings than a hand can turn it; nothing moved on that reading.</source>
+        <translation>The handwheel's counter changed by more between two readings than a hand can turn it; nothing moved on that reading.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The home position is lost or wrong.</source>
+        <translation>The home position is lost or wrong.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The home switch is faulty, dirty or out of place.</source>
+        <translation>The home switch is faulty, dirty or out of place.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine could not compute the cut for this board.</source>
+        <translation>The machine could not compute the cut for this board.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The machine's software met a situation it does not handle; it stopped safely.</source>
+        <translation>The machine's software met a situation it does not handle; it stopped safely.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The motor protection tripped (a blunt cutter, too much feed).</source>
+        <translation>The motor protection tripped (a blunt cutter, too much feed).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The part-present sensor lost the board while the cycle was using it.</source>
+        <translation>The part-present sensor lost the board while the cycle was using it.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The recipe's stave does not fit this machine.</source>
+        <translation>The recipe's stave does not fit this machine.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The recipe's values give no shape for this width.</source>
+        <translation>The recipe's values give no shape for this width.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The screen was busy or frozen.</source>
+        <translation>The screen was busy or frozen.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The sensor is dirty or misadjusted.</source>
+        <translation>The sensor is dirty or misadjusted.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The spindle did not report running in time; nothing was cut.</source>
+        <translation>The spindle did not report running in time; nothing was cut.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The spindle stopped during a cut; the axes were stopped at once.</source>
+        <translation>The spindle stopped during a cut; the axes were stopped at once.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The spindle's contactor or its running signal is faulty.</source>
+        <translation>The spindle's contactor or its running signal is faulty.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The spindle's motor protection tripped.</source>
+        <translation>The spindle's motor protection tripped.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The supply of the spindle dropped.</source>
+        <translation>The supply of the spindle dropped.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The touch was lost while holding the button.</source>
+        <translation>The touch was lost while holding the button.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The way to the cut would take the cutter through the board; nothing moved.</source>
+        <translation>The way to the cut would take the cutter through the board; nothing moved.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The width gauge sent no measurement in time; the board was not cut.</source>
+        <translation>The width gauge sent no measurement in time; the board was not cut.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The width gauge sent something that is not a width.</source>
+        <translation>The width gauge sent something that is not a width.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The width gauge's connection is gone; no board can be measured.</source>
+        <translation>The width gauge's connection is gone; no board can be measured.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The wrong recipe is selected.</source>
+        <translation>The wrong recipe is selected.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Too many wrong PINs were entered; PIN entry waits before it accepts another.</source>
+        <translation>Too many wrong PINs were entered; PIN entry waits before it accepts another.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Tool path could not be planned</source>
         <translation>Tool path could not be planned</translation>
     </message>
@@ -179,6 +807,11 @@
         <location line="+1" />
         <source>Tool path outside the axis travel</source>
         <translation>Tool path outside the axis travel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Wait until the lock ends, then enter the right PIN.</source>
+        <translation>Wait until the lock ends, then enter the right PIN.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -195,11 +828,16 @@
         <source>Width gauge reading not understood</source>
         <translation>Width gauge reading not understood</translation>
     </message>
+    <message>
+        <location line="+1" />
+        <source>Wrong serial settings or a faulty cable.</source>
+        <translation>Wrong serial settings or a faulty cable.</translation>
+    </message>
 </context>
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+140" />
+        <location filename="../../app/screens/alarms_screen.py" line="+157" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
@@ -285,12 +923,12 @@
     <message>
         <location line="-9" />
         <location line="+10" />
-        <location line="+100" />
+        <location line="+124" />
         <source>Source</source>
         <translation>Source</translation>
     </message>
     <message>
-        <location line="-109" />
+        <location line="-133" />
         <source>State</source>
         <translation>State</translation>
     </message>
@@ -305,17 +943,17 @@
         <translation>User</translation>
     </message>
     <message>
-        <location line="+51" />
+        <location line="+52" />
         <source>Acknowledge</source>
         <translation>Acknowledge</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+59" />
         <source>All codes</source>
         <translation>All codes</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+2" />
         <source>Alarm code</source>
         <translation>Alarm code</translation>
     </message>
@@ -677,7 +1315,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-157" />
+        <location filename="catalogue_strings.py" line="-419" />
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -705,6 +1343,11 @@
         <location line="+1" />
         <source>%1: Resume or Abandon</source>
         <translation>%1: Resume or Abandon</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>DC link over-voltage</source>
+        <translation>DC link over-voltage</translation>
     </message>
     <message>
         <location line="+1" />
@@ -758,6 +1401,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>an axis lost its home position</source>
+        <translation>an axis lost its home position</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>axes are not homed: abandon the board (their position is unknown)</source>
         <translation>axes are not homed: abandon the board (their position is unknown)</translation>
     </message>
@@ -767,19 +1415,30 @@
         <translation>axes are not homed: home the machine first</translation>
     </message>
     <message>
+        <location line="+5" />
+        <source>axis %1 is at its lower soft limit %2</source>
+        <translation>axis %1 is at its lower soft limit %2</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>axis %1 is at its soft limit</source>
         <translation>axis %1 is at its soft limit</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>axis %1 is at its soft limit %2 = %3</source>
-        <translation>axis %1 is at its soft limit %2 = %3</translation>
+        <location line="-5" />
+        <source>axis %1 is above its upper soft limit %2 (at %3): only motion back toward the range is allowed</source>
+        <oldsource>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</oldsource>
+        <translation>axis %1 is above its upper soft limit %2 (at %3): only motion back toward the range is allowed</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>axis %1 is at its upper soft limit %2</source>
+        <translation>axis %1 is at its upper soft limit %2</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</source>
-        <translation>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</translation>
+        <source>axis %1 is below its lower soft limit %2 (at %3): only motion back toward the range is allowed</source>
+        <translation>axis %1 is below its lower soft limit %2 (at %3): only motion back toward the range is allowed</translation>
     </message>
     <message>
         <location line="+4" />
@@ -793,6 +1452,71 @@
     </message>
     <message>
         <location line="+1" />
+        <source>axis %1 stopped: the screen stopped confirming the jog</source>
+        <translation>axis %1 stopped: the screen stopped confirming the jog</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1, fault code %2</source>
+        <translation>axis %1, fault code %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: drive did not enable within %2 s</source>
+        <translation>axis %1: drive did not enable within %2 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: drive fault %2 while homing</source>
+        <translation>axis %1: drive fault %2 while homing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: drive not enabled while moving (%2)</source>
+        <translation>axis %1: drive not enabled while moving (%2)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: following error %2 %3 exceeds %4 %3</source>
+        <translation>axis %1: following error %2 %3 exceeds %4 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: homing did not start within %2 s</source>
+        <translation>axis %1: homing did not start within %2 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: homing ended without finding the home switch</source>
+        <translation>axis %1: homing ended without finding the home switch</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: negative limit switch at %2 %3</source>
+        <translation>axis %1: negative limit switch at %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: no feedback from its drive</source>
+        <translation>axis %1: no feedback from its drive</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: not homed after %2 s</source>
+        <translation>axis %1: not homed after %2 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: positive limit switch at %2 %3</source>
+        <translation>axis %1: positive limit switch at %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>axis %1: setpoint %2 %3 outside the travel %4 to %5 %3</source>
+        <translation>axis %1: setpoint %2 %3 outside the travel %4 to %5 %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</source>
         <translation>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</translation>
     </message>
@@ -803,8 +1527,33 @@
     </message>
     <message>
         <location line="+1" />
-        <source>clipped to the soft limit %1 = %2</source>
-        <translation>clipped to the soft limit %1 = %2</translation>
+        <source>centering device not extended after %1 s</source>
+        <translation>centering device not extended after %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>centering device not retracted after %1 s</source>
+        <translation>centering device not retracted after %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clamps not closed after %1 s</source>
+        <translation>clamps not closed after %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clamps not open after %1 s</source>
+        <translation>clamps not open after %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clipped to the lower soft limit %1</source>
+        <translation>clipped to the lower soft limit %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>clipped to the upper soft limit %1</source>
+        <translation>clipped to the upper soft limit %1</translation>
     </message>
     <message>
         <location line="+1" />
@@ -818,6 +1567,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>drive over-temperature</source>
+        <translation>drive over-temperature</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>emergency stop still pressed</source>
         <translation>emergency stop still pressed</translation>
     </message>
@@ -825,6 +1579,11 @@
         <location line="+1" />
         <source>feed override %1 % is not allowed: 0 to 120 %</source>
         <translation>feed override %1 % is not allowed: 0 to 120 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>following error</source>
+        <translation>following error</translation>
     </message>
     <message>
         <location line="+1" />
@@ -840,6 +1599,11 @@
         <location line="+1" />
         <source>handwheel ignored: it jogs only on the Manual screen</source>
         <translation>handwheel ignored: it jogs only on the Manual screen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>heartbeat or life guard</source>
+        <translation>heartbeat or life guard</translation>
     </message>
     <message>
         <location line="+1" />
@@ -888,6 +1652,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>limit switch</source>
+        <translation>limit switch</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>machine is busy (automatic): stop it first</source>
         <translation>machine is busy (automatic): stop it first</translation>
     </message>
@@ -908,6 +1677,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>machine is in emergency stop: release the emergency stop button, then press Reset</source>
+        <translation>machine is in emergency stop: release the emergency stop button, then press Reset</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>machine is in error: press Reset first</source>
         <translation>machine is in error: press Reset first</translation>
     </message>
@@ -925,6 +1699,11 @@
         <location line="+1" />
         <source>no connection to the machine</source>
         <translation>no connection to the machine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no reading within %1 s</source>
+        <translation>no reading within %1 s</translation>
     </message>
     <message>
         <location line="+1" />
@@ -983,6 +1762,16 @@
     </message>
     <message>
         <location line="+1" />
+        <source>over-current</source>
+        <translation>over-current</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>position sensor</source>
+        <translation>position sensor</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>recipe %1 does not exist</source>
         <translation>recipe %1 does not exist</translation>
     </message>
@@ -1038,6 +1827,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>spindle not running after %1 s</source>
+        <translation>spindle not running after %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)</source>
         <translation>step of %1 refused: the cutter would enter the board's keep-out at %2 (a board is on the table)</translation>
     </message>
@@ -1068,6 +1862,11 @@
     </message>
     <message>
         <location line="+3" />
+        <source>the guard was opened</source>
+        <translation>the guard was opened</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the handwheel is jogging: let it and the axes come to rest first</source>
         <translation>the handwheel is jogging: let it and the axes come to rest first</translation>
     </message>
@@ -1075,6 +1874,21 @@
         <location line="+3" />
         <source>the joystick is jogging: let it go and the axes stop first</source>
         <translation>the joystick is jogging: let it go and the axes stop first</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the oldest has waited %1 s</source>
+        <translation>the oldest has waited %1 s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the part-present sensor went off during the cycle</source>
+        <translation>the part-present sensor went off during the cycle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the partly cut board is no longer on the table</source>
+        <translation>the partly cut board is no longer on the table</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1090,6 +1904,11 @@
         <location line="+3" />
         <source>the simulation refused: %1</source>
         <translation>the simulation refused: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the spindle's running signal went off</source>
+        <translation>the spindle's running signal went off</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1279,23 +2098,23 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+169" />
+        <location filename="../../app/screens/main_window.py" line="+172" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+132" />
+        <location line="+143" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-125" />
+        <location line="-136" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+29" />
         <source>Service</source>
         <translation>Service</translation>
     </message>
@@ -1410,7 +2229,7 @@ shift</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+233" />
+        <location filename="../../app/screens/manual_screen.py" line="+235" />
         <source>Manual</source>
         <translation>Manual</translation>
     </message>
@@ -1441,18 +2260,13 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Jog speed and acceleration</source>
-        <translation>Jog speed and acceleration</translation>
+        <source>Jog speed</source>
+        <translation>Jog speed</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Speed</source>
-        <translation>Speed</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Acceleration</source>
-        <translation>Acceleration</translation>
+        <source>Jog acceleration</source>
+        <translation>Jog acceleration</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1535,7 +2349,12 @@ shift</translation>
         <translation>The cutter starts turning. Keep clear of it.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
+        <source>Manual mode:</source>
+        <translation>Manual mode:</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Manual mode: hold a button to jog.</source>
         <translation>Manual mode: hold a button to jog.</translation>
     </message>
@@ -1545,7 +2364,7 @@ shift</translation>
         <translation>Not in manual mode.</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+34" />
         <source>Open clamps</source>
         <translation>Open clamps</translation>
     </message>
@@ -1555,13 +2374,13 @@ shift</translation>
         <translation>Close clamps</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Spindle OFF</source>
         <translation>Spindle OFF</translation>
     </message>
     <message>
-        <location line="-62" />
-        <location line="+62" />
+        <location line="-61" />
+        <location line="+61" />
         <source>Spindle ON</source>
         <translation>Spindle ON</translation>
     </message>
@@ -1703,7 +2522,7 @@ shift</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+31" />
+        <location filename="catalogue_strings.py" line="+251" />
         <source>Distance beyond the board's right end where the tilt changes sides</source>
         <translation>Distance beyond the board's right end where the tilt changes sides</translation>
     </message>

@@ -2,9 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sl" sourcelanguage="en">
 <context>
+    <name>AlarmDetailOverlay</name>
+    <message>
+        <location filename="../../app/screens/alarm_detail.py" line="+132"/>
+        <source>What was found</source>
+        <translation>Kaj je bilo ugotovljeno</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Source: %1</source>
+        <translation>Vir: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kind: %1</source>
+        <translation>Vrsta: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Device reports: %1</source>
+        <translation>Naprava sporoča: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Probable causes</source>
+        <translation>Verjetni vzroki</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>What to do</source>
+        <translation>Kaj storiti</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>History</source>
+        <translation>Zgodovina</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Acknowledge</source>
+        <translation>Potrdi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Close</source>
+        <translation>Zapri</translation>
+    </message>
+</context>
+<context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+61"/>
+        <location filename="../../app/screens/texts.py" line="+64"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -46,9 +94,144 @@
 <context>
     <name>AlarmText</name>
     <message>
-        <location filename="catalogue_strings.py" line="+134"/>
+        <location filename="catalogue_strings.py" line="+176"/>
+        <source>A cable to the motor or its encoder is damaged.</source>
+        <translation>Kabel do motorja ali njegovega dajalnika je poškodovan.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A device answered but refused what the machine asked of it.</source>
+        <translation>Naprava se je odzvala, vendar je zavrnila, kar je stroj zahteval.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A device was replaced by another model or firmware.</source>
+        <translation>Naprava je bila zamenjana z drugim modelom ali vdelano programsko opremo.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A drive did not switch its power stage on when asked.</source>
+        <translation>Pogon na zahtevo ni vklopil močnostne stopnje.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A drive no longer knows where its axis is; the cut was stopped.</source>
+        <translation>Pogon ne ve več, kje je njegova os; rezanje je bilo ustavljeno.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A drive or encoder problem.</source>
+        <translation>Težava s pogonom ali dajalnikom.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A drive or the I/O module lost its supply or restarted.</source>
+        <translation>Pogon ali V/I modul je izgubil napajanje ali se je ponovno zagnal.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>A drive or the I/O refused a request</source>
         <translation>Pogon ali V/I je zavrnil zahtevo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A drive or the I/O reported an event; the machine keeps going.</source>
+        <translation>Pogon ali V/I je sporočil dogodek; stroj dela naprej.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A drive switched its power stage off while the axis was meant to move.</source>
+        <translation>Pogon je izklopil močnostno stopnjo, ko bi se os morala premikati.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A faulty or misadjusted sensor.</source>
+        <translation>Okvarjen ali slabo nastavljen senzor.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A jog stopped because the screen no longer confirmed that its button is held.</source>
+        <translation>Ročni premik se je ustavil, ker zaslon ni več potrjeval, da je gumb pritisnjen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A limit switch is faulty or was hit by a board.</source>
+        <translation>Končno stikalo je okvarjeno ali ga je zadela deska.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A network or bus cable is unplugged or broken.</source>
+        <translation>Omrežni kabel ali kabel vodila je izklopljen ali pretrgan.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A safety relay or a wire of the chain is open.</source>
+        <translation>Varnostni rele ali vodnik verige je odprt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A servo drive reports a fault and has switched its motor off.</source>
+        <translation>Servopogon sporoča napako in je izklopil motor.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A software fault.</source>
+        <translation>Napaka v programski opremi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A switch between them failed.</source>
+        <translation>Odpovedalo je stikalo med njimi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A warning inside the device.</source>
+        <translation>Opozorilo v napravi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A wrong PIN was tried several times.</source>
+        <translation>Večkrat je bil vnesen napačen PIN.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Air pressure too low.</source>
+        <translation>Prenizek tlak zraka.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An axis did not find its home position within the expected time.</source>
+        <translation>Os v pričakovanem času ni našla referenčne lege.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>An axis lags too far behind where it should be; it was stopped before it could go somewhere unexpected.</source>
+        <translation>Os preveč zaostaja za predpisano lego; ustavljena je bila, preden bi lahko zašla, kamor ne bi smela.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>An axis ran onto its end-of-travel switch and was stopped.</source>
+        <translation>Os je zapeljala na končno stikalo in je bila ustavljena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An axis stands where the approach cannot go round the board.</source>
+        <translation>Os stoji tam, kjer dovoz ne more okoli deske.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An emergency stop button is pressed.</source>
+        <translation>Pritisnjena je tipka za zasilno zaustavitev.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An encoder signal was lost.</source>
+        <translation>Izgubljen je bil signal dajalnika.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Another program holds the database.</source>
+        <translation>Drug program zaseda podatkovno bazo.</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -67,21 +250,101 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Call a technician to free disk space or the database; the records are written once it answers.</source>
+        <translation>Pokličite tehnika, da sprosti prostor na disku ali podatkovno bazo; zapisi se zapišejo, ko se baza odzove.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Call a technician with the code in the details; then press Reset.</source>
+        <translation>Pokličite tehnika in mu povejte kodo iz podrobnosti; nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Centering device did not reach its sensor</source>
         <translation>Centrirna naprava ni dosegla senzorja</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Check the air pressure and the centering device, then press Reset.</source>
+        <translation>Preverite tlak zraka in centrirno napravo, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check the air pressure and the clamps, then press Reset.</source>
+        <translation>Preverite tlak zraka in vpenjala, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check the axis and its home switch, then press Reset and home again.</source>
+        <translation>Preverite os in njeno referenčno stikalo, nato pritisnite Ponastavi in ponovno referencirajte.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check the cables and the supply of the device named in the details, then press Reset (it reconnects).</source>
+        <translation>Preverite kable in napajanje naprave, navedene v podrobnostih, nato pritisnite Ponastavi (ponovno se poveže).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Check the cutter and the motor protection. Press Reset, then resume or abandon the board.</source>
+        <translation>Preverite rezkar in motorsko zaščito. Pritisnite Ponastavi, nato desko nadaljujte ali opustite.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Check the drive&apos;s display and its supply, then press Reset.</source>
+        <translation>Preverite prikaz na pogonu in njegovo napajanje, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check the emergency stop buttons and the drive&apos;s display, then press Reset.</source>
+        <translation>Preverite tipke za zasilno zaustavitev in prikaz na pogonu, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check the gauge and its cable, then press Reset: the board is measured again.</source>
+        <translation>Preverite merilnik in njegov kabel, nato pritisnite Ponastavi: deska bo ponovno izmerjena.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Check the gauge&apos;s display and cable, then press Reset.</source>
+        <translation>Preverite prikaz na merilniku in kabel, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check the handwheel&apos;s cable and plug, then press Reset. If it repeats, call a technician.</source>
+        <translation>Preverite kabel in vtič ročnega kolesa, nato pritisnite Ponastavi. Če se ponovi, pokličite tehnika.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Check the spindle&apos;s motor protection switch, then press Reset.</source>
+        <translation>Preverite motorsko zaščitno stikalo vretena, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Clamps did not reach their sensor</source>
         <translation>Vpenjala niso dosegla senzorja</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Clear the axis, check that it moves freely, then press Reset. If it repeats, lower the feed or call a technician.</source>
+        <translation>Sprostite os, preverite, da se prosto giblje, nato pritisnite Ponastavi. Če se ponovi, zmanjšajte podajanje ali pokličite tehnika.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Close the guard, check that nothing is in the way, then press Reset.</source>
+        <translation>Zaprite zaščito, preverite, da nič ne ovira, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Communication with the drives or I/O lost</source>
         <translation>Izgubljena komunikacija s pogoni ali V/I</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Cut to fit, this board would leave a gap in the barrel that no stave can close.</source>
+        <translation>Če bi to desko odrezali, bi v sodu ostala reža, ki je ne more zapreti nobena doga.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Device event</source>
         <translation>Dogodek naprave</translation>
     </message>
@@ -102,8 +365,18 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Electrical noise on the handwheel&apos;s cable or a bad connector.</source>
+        <translation>Električne motnje na kablu ročnega kolesa ali slab konektor.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Emergency stop</source>
         <translation>Zasilna zaustavitev</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Feed or acceleration set higher than the axis can follow.</source>
+        <translation>Podajanje ali pospešek je nastavljen višje, kot mu os lahko sledi.</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -142,6 +415,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Make sure nobody is in danger, release the button (turn it), then press Reset.</source>
+        <translation>Prepričajte se, da nihče ni v nevarnosti, sprostite tipko (zavrtite jo), nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Make sure the table is clear or the board is in place, then press Reset.</source>
+        <translation>Prepričajte se, da je miza prosta ali da je deska na svojem mestu, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Measured width not allowed for this recipe</source>
         <translation>Izmerjena širina ni dovoljena za ta recept</translation>
     </message>
@@ -152,13 +435,68 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Note the time and the details, press Reset, and tell service.</source>
+        <translation>Zapišite si čas in podrobnosti, pritisnite Ponastavi in obvestite servis.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Over-current or over-temperature: the axis is stuck or overloaded.</source>
+        <translation>Prevelik tok ali previsoka temperatura: os je zagozdena ali preobremenjena.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>PIN entry locked after repeated wrong PINs</source>
         <translation>Vnos PIN zaklenjen po ponavljajočih se napačnih PIN-ih</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Plug the gauge in again, then press Reset (it reconnects).</source>
+        <translation>Ponovno priklopite merilnik, nato pritisnite Ponastavi (ponovno se poveže).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Press Reset and home the machine before the next board.</source>
+        <translation>Pritisnite Ponastavi in pred naslednjo desko referencirajte stroj.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Press Reset, jog the axis away from the switch on the Manual screen (the opposite direction only), then home the machine.</source>
+        <translation>Pritisnite Ponastavi, na zaslonu Ročno premaknite os stran od stikala (samo v nasprotni smeri), nato referencirajte stroj.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Press Reset, move the cutter clear of the board on the Manual screen, then start again.</source>
+        <translation>Pritisnite Ponastavi, na zaslonu Ročno umaknite rezkar od deske, nato ponovno zaženite.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Press and hold the jog button again.</source>
+        <translation>Ponovno pritisnite in držite gumb za ročni premik.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Production and alarm records are kept on the side because the database is busy or missing; nothing is lost yet.</source>
+        <translation>Zapisi o proizvodnji in alarmih se hranijo ob strani, ker je podatkovna baza zasedena ali je ni; nič še ni izgubljeno.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Read the details; call a technician if it repeats.</source>
+        <translation>Preberite podrobnosti; če se ponavlja, pokličite tehnika.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read the fault code in the details, look at the axis for anything jammed, then press Reset. If it comes back, call a technician with the code.</source>
+        <translation>Preberite kodo napake v podrobnostih, preverite, ali se je os kje zagozdila, nato pritisnite Ponastavi. Če se napaka vrne, pokličite tehnika in mu povejte kodo.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Records waiting for the database</source>
         <translation>Zapisi čakajo na podatkovno bazo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Somebody opened the guard.</source>
+        <translation>Nekdo je odprl zaščito.</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -172,6 +510,296 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Supply voltage too high or too low.</source>
+        <translation>Napajalna napetost je previsoka ali prenizka.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Take the board off (or choose the right recipe), then press Reset.</source>
+        <translation>Odstranite desko (ali izberite pravi recept), nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Take the board off and check the recipe, then press Reset.</source>
+        <translation>Odstranite desko in preverite recept, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Take the board off and check the recipe, then press Reset. If it repeats with a good recipe, call service with the details.</source>
+        <translation>Odstranite desko in preverite recept, nato pritisnite Ponastavi. Če se ponovi z dobrim receptom, pokličite servis in mu povejte podrobnosti.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Take the board off and put a wider one on, then press Reset.</source>
+        <translation>Odstranite desko in položite širšo, nato pritisnite Ponastavi.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The axis is blocked or runs stiffly (chips, a board in the way, dry guides).</source>
+        <translation>Os je blokirana ali teče težko (ostružki, deska na poti, suha vodila).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The axis was blocked or stopped during homing.</source>
+        <translation>Os je bila med referenciranjem blokirana ali ustavljena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The axis was jogged past its range.</source>
+        <translation>Os je bila ročno premaknjena čez svoje območje.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board is in the way or the clamps are jammed.</source>
+        <translation>Deska je na poti ali pa so vpenjala zagozdena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board is in the way or the device is jammed.</source>
+        <translation>Deska je na poti ali pa je naprava zagozdena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board is narrower or wider than the recipe can cut; it was not cut.</source>
+        <translation>Deska je ožja ali širša, kot jo recept lahko odreže; ni bila odrezana.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The board is narrower than the barrel still needs.</source>
+        <translation>Deska je ožja, kot jo sod še potrebuje.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board is too narrow or too wide for this recipe.</source>
+        <translation>Deska je preozka ali preširoka za ta recept.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board is wider than the machine can cut.</source>
+        <translation>Deska je širša, kot jo stroj lahko odreže.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The board was taken off or moved.</source>
+        <translation>Deska je bila odstranjena ali premaknjena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The centering device did not extend or retract in time.</source>
+        <translation>Centrirna naprava se ni pravočasno iztegnila ali umaknila.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The clamps did not close or open in time, as their sensor reports.</source>
+        <translation>Vpenjala se po poročilu senzorja niso pravočasno zaprla ali odprla.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The computer no longer hears a drive or the I/O; the machine stopped.</source>
+        <translation>Računalnik ne sliši več pogona ali V/I; stroj se je ustavil.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The cut would need an axis beyond its travel; nothing moved there.</source>
+        <translation>Rez bi zahteval os zunaj njenega hoda; tja se ni nič premaknilo.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The device is configured differently from the machine&apos;s configuration.</source>
+        <translation>Naprava je nastavljena drugače, kot določa konfiguracija stroja.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The disk is full or slow.</source>
+        <translation>Disk je poln ali počasen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The drive is in fault or has no supply.</source>
+        <translation>Pogon je v napaki ali nima napajanja.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The drive lost its supply.</source>
+        <translation>Pogon je izgubil napajanje.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The drive was switched off or restarted.</source>
+        <translation>Pogon je bil izklopljen ali ponovno zagnan.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The drive&apos;s enable or safe torque off input dropped.</source>
+        <translation>Vhod za omogočitev ali varni izklop navora pogona je izpadel.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The emergency stop chain is open: every drive stopped and lost power.</source>
+        <translation>Veriga zasilne zaustavitve je odprta: vsi pogoni so se ustavili in izgubili napajanje.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The emergency stop chain or safe torque off is still open.</source>
+        <translation>Veriga zasilne zaustavitve ali varni izklop navora je še odprt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gauge is not in contact with the board.</source>
+        <translation>Merilnik se ne dotika deske.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gauge lost its supply.</source>
+        <translation>Merilnik je izgubil napajanje.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gauge reports its own error (out of range, no contact).</source>
+        <translation>Merilnik sporoča lastno napako (zunaj območja, ni stika).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gauge&apos;s cable is loose.</source>
+        <translation>Kabel merilnika je razrahljan.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gauge&apos;s cable or adapter is unplugged.</source>
+        <translation>Kabel ali vmesnik merilnika je izklopljen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The guard switch is loose or badly adjusted.</source>
+        <translation>Stikalo zaščite je razrahljano ali slabo nastavljeno.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The guard was opened while an axis or the cutter moved; the machine stopped.</source>
+        <translation>Zaščita je bila odprta, ko se je premikala os ali rezkar; stroj se je ustavil.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The handwheel or its counter input is faulty.</source>
+        <translation>Ročno kolo ali njegov števni vhod je okvarjen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The handwheel&apos;s counter changed by more between two readings than a hand can turn it; nothing moved on that reading.</source>
+        <translation>Števec ročnega kolesa se je med dvema odčitkoma spremenil bolj, kot ga lahko zavrti roka; ob tem odčitku se ni nič premaknilo.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The home position is lost or wrong.</source>
+        <translation>Referenčna lega je izgubljena ali napačna.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The home switch is faulty, dirty or out of place.</source>
+        <translation>Referenčno stikalo je okvarjeno, umazano ali premaknjeno.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The machine could not compute the cut for this board.</source>
+        <translation>Stroj za to desko ni mogel izračunati reza.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The machine&apos;s software met a situation it does not handle; it stopped safely.</source>
+        <translation>Programska oprema stroja je naletela na stanje, ki ga ne obravnava; varno se je ustavila.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The motor protection tripped (a blunt cutter, too much feed).</source>
+        <translation>Sprožila se je motorska zaščita (top rezkar, preveliko podajanje).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The part-present sensor lost the board while the cycle was using it.</source>
+        <translation>Senzor prisotnosti deske je izgubil desko, medtem ko jo je cikel uporabljal.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The recipe&apos;s stave does not fit this machine.</source>
+        <translation>Doga iz recepta ne ustreza temu stroju.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The recipe&apos;s values give no shape for this width.</source>
+        <translation>Vrednosti recepta za to širino ne dajo oblike.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The screen was busy or frozen.</source>
+        <translation>Zaslon je bil zaseden ali zamrznjen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sensor is dirty or misadjusted.</source>
+        <translation>Senzor je umazan ali slabo nastavljen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The spindle did not report running in time; nothing was cut.</source>
+        <translation>Vreteno ni pravočasno sporočilo, da teče; nič ni bilo odrezano.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The spindle stopped during a cut; the axes were stopped at once.</source>
+        <translation>Vreteno se je ustavilo med rezanjem; osi so bile takoj ustavljene.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The spindle&apos;s contactor or its running signal is faulty.</source>
+        <translation>Kontaktor vretena ali njegov signal delovanja je okvarjen.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The spindle&apos;s motor protection tripped.</source>
+        <translation>Sprožila se je motorska zaščita vretena.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The supply of the spindle dropped.</source>
+        <translation>Napajanje vretena je izpadlo.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The touch was lost while holding the button.</source>
+        <translation>Med držanjem gumba se je dotik izgubil.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The way to the cut would take the cutter through the board; nothing moved.</source>
+        <translation>Pot do reza bi vodila rezkar skozi desko; nič se ni premaknilo.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The width gauge sent no measurement in time; the board was not cut.</source>
+        <translation>Merilnik širine ni pravočasno poslal meritve; deska ni bila odrezana.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The width gauge sent something that is not a width.</source>
+        <translation>Merilnik širine je poslal nekaj, kar ni širina.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The width gauge&apos;s connection is gone; no board can be measured.</source>
+        <translation>Povezave z merilnikom širine ni več; nobene deske ni mogoče izmeriti.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The wrong recipe is selected.</source>
+        <translation>Izbran je napačen recept.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Too many wrong PINs were entered; PIN entry waits before it accepts another.</source>
+        <translation>Vnesenih je bilo preveč napačnih PIN-ov; vnos PIN počaka, preden sprejme novega.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Tool path could not be planned</source>
         <translation>Poti orodja ni bilo mogoče načrtovati</translation>
     </message>
@@ -179,6 +807,11 @@
         <location line="+1"/>
         <source>Tool path outside the axis travel</source>
         <translation>Pot orodja je zunaj hoda osi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wait until the lock ends, then enter the right PIN.</source>
+        <translation>Počakajte, da se zaklep konča, nato vnesite pravi PIN.</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -195,11 +828,16 @@
         <source>Width gauge reading not understood</source>
         <translation>Meritev merilnika širine ni razumljiva</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>Wrong serial settings or a faulty cable.</source>
+        <translation>Napačne nastavitve serijskih vrat ali okvarjen kabel.</translation>
+    </message>
 </context>
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+140"/>
+        <location filename="../../app/screens/alarms_screen.py" line="+157"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
@@ -285,12 +923,12 @@
     <message>
         <location line="-9"/>
         <location line="+10"/>
-        <location line="+100"/>
+        <location line="+124"/>
         <source>Source</source>
         <translation>Vir</translation>
     </message>
     <message>
-        <location line="-109"/>
+        <location line="-133"/>
         <source>State</source>
         <translation>Stanje</translation>
     </message>
@@ -305,17 +943,17 @@
         <translation>Uporabnik</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Acknowledge</source>
         <translation>Potrdi</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+59"/>
         <source>All codes</source>
         <translation>Vse kode</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Alarm code</source>
         <translation>Koda alarma</translation>
     </message>
@@ -677,7 +1315,7 @@
 <context>
     <name>MachineText</name>
     <message>
-        <location filename="catalogue_strings.py" line="-157"/>
+        <location filename="catalogue_strings.py" line="-419"/>
         <source>%1</source>
         <translation>%1</translation>
     </message>
@@ -705,6 +1343,11 @@
         <location line="+1"/>
         <source>%1: Resume or Abandon</source>
         <translation>%1: nadaljujte ali opustite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DC link over-voltage</source>
+        <translation>prenapetost v enosmernem vmesnem krogu</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -758,6 +1401,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>an axis lost its home position</source>
+        <translation>os je izgubila referenčno lego</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>axes are not homed: abandon the board (their position is unknown)</source>
         <translation>osi niso referencirane: opustite desko (njihov položaj ni znan)</translation>
     </message>
@@ -767,19 +1415,30 @@
         <translation>osi niso referencirane: najprej referencirajte stroj</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>axis %1 is at its lower soft limit %2</source>
+        <translation>os %1 je na spodnji programski meji %2</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>axis %1 is at its soft limit</source>
         <translation>os %1 je na programski meji</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>axis %1 is at its soft limit %2 = %3</source>
-        <translation>os %1 je na programski meji %2 = %3</translation>
+        <location line="-5"/>
+        <source>axis %1 is above its upper soft limit %2 (at %3): only motion back toward the range is allowed</source>
+        <oldsource>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</oldsource>
+        <translation>os %1 je nad zgornjo programsko mejo %2 (na %3): dovoljen je le premik nazaj proti območju</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>axis %1 is at its upper soft limit %2</source>
+        <translation>os %1 je na zgornji programski meji %2</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>axis %1 is beyond its soft limit %2 = %3 (%4): only motion back toward the range is allowed</source>
-        <translation>os %1 je čez programsko mejo %2 = %3 (%4): dovoljen je le premik nazaj proti območju</translation>
+        <source>axis %1 is below its lower soft limit %2 (at %3): only motion back toward the range is allowed</source>
+        <translation>os %1 je pod spodnjo programsko mejo %2 (na %3): dovoljen je le premik nazaj proti območju</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -793,6 +1452,71 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>axis %1 stopped: the screen stopped confirming the jog</source>
+        <translation>os %1 ustavljena: zaslon ni več potrjeval ročnega premika</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1, fault code %2</source>
+        <translation>os %1, koda napake %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: drive did not enable within %2 s</source>
+        <translation>os %1: pogon se ni vklopil v %2 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: drive fault %2 while homing</source>
+        <translation>os %1: napaka pogona %2 med referenciranjem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: drive not enabled while moving (%2)</source>
+        <translation>os %1: pogon med gibanjem ni vklopljen (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: following error %2 %3 exceeds %4 %3</source>
+        <translation>os %1: pogrešek sledenja %2 %3 presega %4 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: homing did not start within %2 s</source>
+        <translation>os %1: referenciranje se ni začelo v %2 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: homing ended without finding the home switch</source>
+        <translation>os %1: referenciranje se je končalo, ne da bi našlo referenčno stikalo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: negative limit switch at %2 %3</source>
+        <translation>os %1: negativno končno stikalo pri %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: no feedback from its drive</source>
+        <translation>os %1: ni povratne informacije od pogona</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: not homed after %2 s</source>
+        <translation>os %1: po %2 s ni referencirana</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: positive limit switch at %2 %3</source>
+        <translation>os %1: pozitivno končno stikalo pri %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>axis %1: setpoint %2 %3 outside the travel %4 to %5 %3</source>
+        <translation>os %1: zahtevana lega %2 %3 je zunaj hoda od %4 do %5 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>board abandoned and unclamped: take it off (nothing moved: check that the cutter is clear of it)</source>
         <translation>deska opuščena in odpeta: odstranite jo (nič se ni premaknilo: preverite, da rezkar ni na njej)</translation>
     </message>
@@ -803,8 +1527,33 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>clipped to the soft limit %1 = %2</source>
-        <translation>omejeno na programsko mejo %1 = %2</translation>
+        <source>centering device not extended after %1 s</source>
+        <translation>centrirna naprava po %1 s ni iztegnjena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>centering device not retracted after %1 s</source>
+        <translation>centrirna naprava po %1 s ni umaknjena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clamps not closed after %1 s</source>
+        <translation>vpenjala po %1 s niso zaprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clamps not open after %1 s</source>
+        <translation>vpenjala po %1 s niso odprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clipped to the lower soft limit %1</source>
+        <translation>omejeno na spodnjo programsko mejo %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>clipped to the upper soft limit %1</source>
+        <translation>omejeno na zgornjo programsko mejo %1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -818,6 +1567,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>drive over-temperature</source>
+        <translation>previsoka temperatura pogona</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>emergency stop still pressed</source>
         <translation>zasilna zaustavitev je še pritisnjena</translation>
     </message>
@@ -825,6 +1579,11 @@
         <location line="+1"/>
         <source>feed override %1 % is not allowed: 0 to 120 %</source>
         <translation>korekcija podajanja %1 % ni dovoljena: 0 do 120 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>following error</source>
+        <translation>pogrešek sledenja</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -840,6 +1599,11 @@
         <location line="+1"/>
         <source>handwheel ignored: it jogs only on the Manual screen</source>
         <translation>ročno kolo ni upoštevano: premika samo na zaslonu Ročno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>heartbeat or life guard</source>
+        <translation>nadzor delovanja (heartbeat ali life guard)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -888,6 +1652,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>limit switch</source>
+        <translation>končno stikalo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>machine is busy (automatic): stop it first</source>
         <translation>stroj je zaseden (avtomatika): najprej ga ustavite</translation>
     </message>
@@ -908,6 +1677,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>machine is in emergency stop: release the emergency stop button, then press Reset</source>
+        <translation>stroj je v zasilni zaustavitvi: sprostite tipko za zasilno zaustavitev, nato pritisnite Ponastavi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>machine is in error: press Reset first</source>
         <translation>stroj je v napaki: najprej pritisnite Ponastavi</translation>
     </message>
@@ -925,6 +1699,11 @@
         <location line="+1"/>
         <source>no connection to the machine</source>
         <translation>ni povezave s strojem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no reading within %1 s</source>
+        <translation>ni meritve v %1 s</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -983,6 +1762,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>over-current</source>
+        <translation>prevelik tok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position sensor</source>
+        <translation>senzor položaja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>recipe %1 does not exist</source>
         <translation>recept %1 ne obstaja</translation>
     </message>
@@ -1038,6 +1827,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>spindle not running after %1 s</source>
+        <translation>vreteno po %1 s ne teče</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>step of %1 refused: the cutter would enter the board&apos;s keep-out at %2 (a board is on the table)</source>
         <translation>korak %1 zavrnjen: rezilo bi pri %2 vstopilo v zaščitno območje deske (na mizi je deska)</translation>
     </message>
@@ -1068,6 +1862,11 @@
     </message>
     <message>
         <location line="+3"/>
+        <source>the guard was opened</source>
+        <translation>zaščita je bila odprta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the handwheel is jogging: let it and the axes come to rest first</source>
         <translation>ročno kolo premika: najprej naj se umiri ono in osi</translation>
     </message>
@@ -1075,6 +1874,21 @@
         <location line="+3"/>
         <source>the joystick is jogging: let it go and the axes stop first</source>
         <translation>igralna palica premika: najprej jo spustite in počakajte, da se osi ustavijo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the oldest has waited %1 s</source>
+        <translation>najstarejši čaka že %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the part-present sensor went off during the cycle</source>
+        <translation>senzor prisotnosti deske se je med ciklom izklopil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the partly cut board is no longer on the table</source>
+        <translation>delno odrezane deske ni več na mizi</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1090,6 +1904,11 @@
         <location line="+3"/>
         <source>the simulation refused: %1</source>
         <translation>simulacija je zavrnila: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the spindle&apos;s running signal went off</source>
+        <translation>signal delovanja vretena je izpadel</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1279,23 +2098,23 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+169"/>
+        <location filename="../../app/screens/main_window.py" line="+172"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+132"/>
+        <location line="+143"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-136"/>
         <source>The machine is not running.</source>
         <translation>Stroj ne deluje.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+29"/>
         <source>Service</source>
         <translation>Servis</translation>
     </message>
@@ -1410,7 +2229,7 @@ izmena</translation>
 <context>
     <name>ManualScreen</name>
     <message>
-        <location filename="../../app/screens/manual_screen.py" line="+233"/>
+        <location filename="../../app/screens/manual_screen.py" line="+235"/>
         <source>Manual</source>
         <translation>Ročno</translation>
     </message>
@@ -1441,18 +2260,13 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Jog speed and acceleration</source>
-        <translation>Hitrost in pospešek ročnega premika</translation>
+        <source>Jog speed</source>
+        <translation>Hitrost ročnega premika</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Speed</source>
-        <translation>Hitrost</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Acceleration</source>
-        <translation>Pospešek</translation>
+        <source>Jog acceleration</source>
+        <translation>Pospešek ročnega premika</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1535,7 +2349,12 @@ izmena</translation>
         <translation>Rezilo se začne vrteti. Ne približujte se mu.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
+        <source>Manual mode:</source>
+        <translation>Ročni način:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Manual mode: hold a button to jog.</source>
         <translation>Ročni način: za premik držite gumb.</translation>
     </message>
@@ -1545,7 +2364,7 @@ izmena</translation>
         <translation>Stroj ni v ročnem načinu.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+34"/>
         <source>Open clamps</source>
         <translation>Odpri vpenjala</translation>
     </message>
@@ -1555,13 +2374,13 @@ izmena</translation>
         <translation>Zapri vpenjala</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Spindle OFF</source>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="-62"/>
-        <location line="+62"/>
+        <location line="-61"/>
+        <location line="+61"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>
@@ -1703,7 +2522,7 @@ izmena</translation>
 <context>
     <name>Parameters</name>
     <message>
-        <location filename="catalogue_strings.py" line="+31"/>
+        <location filename="catalogue_strings.py" line="+251"/>
         <source>Distance beyond the board&apos;s right end where the tilt changes sides</source>
         <translation>Razdalja za desnim koncem deske, kjer se nagib zamenja</translation>
     </message>

@@ -17,6 +17,8 @@ from app.data.records import format_utc
 from app.data.users import Role
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
+from app.screens.alarm_detail import AlarmDetailOverlay
+from app.screens.texts import alarm_help, machine_text
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keypad import NumberKeypad, PinPad
 from tests.screens.helpers import enter_pin, find_button, wait_for
@@ -120,15 +122,30 @@ def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
     alarmed = wait_for(qtbot, window, lambda s: bool(s.alarms) and s.state is MachineState.ERROR)
     alarm = alarmed.alarms[0]
     assert window.banner.isVisible() and alarm.code in window.banner.text()
+    assert f"axis {alarm.source}," in window.banner.text()  # the banner names the axis
     assert window.banner.property("severity") == "fault"
+    # The Manual screen says on screen, under the control, why it is refused.
+    manual = window.page("manual")
+    manual.update_snapshot(alarmed)
+    assert machine_text(alarmed.allowed["Home"]) in manual.reason_label.text()
+    assert manual.reason_label.isVisibleTo(manual) and manual.reason_label.text()
 
     tap(window.banner)  # the banner leads to the Alarms screen
     screen = window.page("alarms")
     assert window.current_screen is screen
     assert screen.active_table.rowCount() == len(alarmed.alarms)
-    ack = screen.ack_button(alarm.alarm_id)
-    assert ack is not None
-    tap(ack)
+    assert screen.ack_button(alarm.alarm_id) is not None
+    # Tapping the row opens the whole alarm; it is acknowledged from there.
+    table = screen.active_table
+    cell = table.visualItemRect(table.item(0, 2)).center()
+    qtbot.mouseClick(table.viewport(), Qt.MouseButton.LeftButton, pos=cell)
+    detail = window.overlay()
+    assert isinstance(detail, AlarmDetailOverlay)
+    help_ = alarm_help(alarm.code)
+    assert help_ is not None and detail.remedy_label.text() == help_.remedy
+    assert all(cause in detail.causes_label.text() for cause in help_.causes)
+    assert f"axis {alarm.source}, fault code 0x" in detail.found_label.text()
+    tap(detail.ack_button)
     wait_for(
         qtbot,
         window,
@@ -163,6 +180,11 @@ def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
     assert all(
         screen.history_table.item(r, 3).text() == alarm.source for r in range(screen.history_count)
     )
+    # A history row opens the same view: the occurrence's times, and who acknowledged it.
+    old_detail = screen.open_history(screen.history_count - 1)
+    assert old_detail is not None and window.overlay() is old_detail
+    assert window.session.name in old_detail.history_label.text()
+    tap(old_detail.close_button)
     window.session.logout()
 
 

@@ -6,7 +6,7 @@ the same text still costs a relayout; comparing first keeps an idle screen nearl
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QEvent, Qt
 from PySide6.QtWidgets import (
     QAbstractButton,
     QFrame,
@@ -32,6 +32,36 @@ def styled_label(text: str, role: str, name: str = "") -> QLabel:
     if name:
         label.setObjectName(name)
     return label
+
+
+REASON_LINES = 2
+
+
+class ReasonLabel(QLabel):
+    """Why the control above it is refused, in words on the screen (a touch screen shows
+    no tooltips). Its height is kept for two lines whether it is empty or not, so that the
+    controls below never move when a reason appears; it follows the font the theme gives."""
+
+    def __init__(self, name: str, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName(name)
+        self.setProperty("role", "reason")
+        self.setWordWrap(True)
+        self._fit()
+
+    def changeEvent(self, event: QEvent) -> None:
+        super().changeEvent(event)
+        if event.type() in (QEvent.Type.FontChange, QEvent.Type.StyleChange):
+            self._fit()
+
+    def _fit(self) -> None:
+        height = REASON_LINES * self.fontMetrics().lineSpacing()
+        if self.minimumHeight() != height or self.maximumHeight() != height:
+            self.setFixedHeight(height)
+
+
+def reason_label(name: str) -> ReasonLabel:
+    return ReasonLabel(name)
 
 
 class AxisReadout(QFrame):
