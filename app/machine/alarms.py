@@ -565,13 +565,16 @@ class AlarmManager:
         if alarm is not None:
             self._apply(alarm, AlarmAction.CONDITION_OFF)
 
-    def clear_all_conditions(self, keep: Callable[[Alarm], bool] = lambda _a: False) -> None:
-        """On Reset: every event condition is over, except those ``keep`` says still hold."""
+    def clear_all_conditions(
+        self, keep: Callable[[Alarm], bool] = lambda _a: False, user: str = ""
+    ) -> None:
+        """On Reset (by ``user``): every event condition is over, except those ``keep``
+        says still hold."""
         for alarm in list(self._alarms.values()):
             if alarm.state in (AlarmState.ACTIVE_UNACKED, AlarmState.ACTIVE_ACKED) and not keep(
                 alarm
             ):
-                self._apply(alarm, AlarmAction.CONDITION_OFF)
+                self._apply(alarm, AlarmAction.CONDITION_OFF, user)
 
     def acknowledge(self, alarm_id: int = 0, user: str = "") -> int:
         """Acknowledge one alarm, or all with ``alarm_id`` 0; returns how many changed."""

@@ -86,7 +86,6 @@ class MachineController(CycleControl):
         self.sim_tools = SimulationTools(backend)
         self.manual_move = ManualMove(config.axes, config.period_s)
         self.pendant_jog = PendantJog(config, pendant)
-        self.user = ""
         self.io_points = io_table(config)
         self._commands: collections.deque[cmd.Command] = collections.deque()
         self._previous_inputs = InputImage()
@@ -122,6 +121,8 @@ class MachineController(CycleControl):
             if refused.reason is not Reason.NOTHING_MOVING:  # a spare Stop is no news
                 self._refuse(refused)
             return
+        if (line := self.action_log.accepted(command, self.user)) is not None:
+            log.info("action: %s", line)
         match command:
             case cmd.Start():
                 self._start()
@@ -392,6 +393,8 @@ class MachineController(CycleControl):
                 if self.manual_move.tick(self.axes):
                     self.manual.sync(self.axes)
             elif warning := self.manual.tick(self.now_s, self.config.period_s, self.axes):
+                log.warning("jog %s stopped by its dead-man: no refresh from the screen", warning)
+                self.action_log.stopped(warning)
                 detail = refusal(Reason.JOG_NOT_REFRESHED_DETAIL, warning)
                 self.alarms.raise_alarm(AlarmCode.JOG_NOT_REFRESHED, warning, detail)
                 self.alarms.clear(AlarmCode.JOG_NOT_REFRESHED, warning)

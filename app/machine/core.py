@@ -16,6 +16,7 @@ from dataclasses import replace
 from app.config import MachineConfig
 from app.data.recipe import Recipe
 from app.drivers.contracts import DriverError, InputImage, MachineBackend, OutputImage, WidthGauge
+from app.machine.action_log import ActionLog
 from app.machine.alarms import AlarmCode, AlarmDetail, AlarmManager
 from app.machine.axes import AxisGroup
 from app.machine.cycle import AutomaticCycle
@@ -73,6 +74,8 @@ class ControllerCore:
         self.homing: HomingSequence | None = None
         self._message: Refusal | None = None
         self.message_serial = 0
+        self.user = ""  # who is at the panel (SetUser), for the records and the log
+        self.action_log = ActionLog()
 
     @property
     def message(self) -> Refusal | None:
@@ -128,7 +131,9 @@ class ControllerCore:
     def _refuse(self, refusal: Refusal | None) -> None:
         if refusal is not None:
             self.message = refusal
-            log.info("refused: %s", refusal)
+            line = self.action_log.refused(refusal, self.now_s, self.user)
+            if line is not None:
+                log.info("%s", line)
 
     # ---------------------------------------------------------------- transitions
     def _transition(self, event: Event) -> None:
@@ -178,6 +183,7 @@ class ControllerCore:
             self.cycle = None
         self.homing = None
         self.manual.release_all(immediate=True)
+        self.action_log.stopped_all()
         self.outputs = replace(self.outputs, spindle_on=False, centering_extend=False)
         if self.axes.feedback:
             self.axes.hold_where_they_are()
@@ -226,7 +232,7 @@ class ControllerCore:
         if step is ResetStep.SEND_FAULT_RESET:
             self.devices.call(self.axes.fault_reset_all)
         elif step is ResetStep.DONE:
-            self.alarms.clear_all_conditions()
+            self.alarms.clear_all_conditions(user=self.user)
             self.axes.hold_where_they_are()
             self.manual.sync(self.axes)
             self.message = Refusal(Reason.RESET_DONE)

@@ -5,6 +5,8 @@ clock, through the same commands the screens send."""
 
 from __future__ import annotations
 
+import logging
+
 import pytest
 
 from app.data.database import Database
@@ -152,7 +154,13 @@ def test_drive_fault_latches_error_and_reset_ends_disabled(ready_rig: Rig) -> No
     assert rig.controller.cycle is None
 
 
-def test_manual_jog_hold_release_and_deadman(rig: Rig) -> None:
+def _log_lines(caplog: pytest.LogCaptureFixture, text: str) -> list[str]:
+    return [r.getMessage() for r in caplog.records if text in r.getMessage()]
+
+
+def test_manual_jog_hold_release_and_deadman(rig: Rig, caplog: pytest.LogCaptureFixture) -> None:
+    caplog.set_level(logging.INFO, logger="app.machine")
+    rig.send(cmd.SetUser("anna"))
     rig.home()
     rig.send(cmd.EnterManual())
     assert rig.state is MachineState.MANUAL
@@ -174,12 +182,24 @@ def test_manual_jog_hold_release_and_deadman(rig: Rig) -> None:
     assert abs(rig.positions()[1] - (rig.controller.axes.command["Y"])) < 0.01
     rig.send(cmd.LeaveManual())
     assert rig.state is MachineState.READY
+    # The machine log: each held jog once (not each refresh), the dead-man stop once, every
+    # action with the user at the panel.
+    jogs = _log_lines(caplog, "JogContinuous(axis='X', direction=1) by anna")
+    assert len(jogs) == 2
+    assert len(_log_lines(caplog, "jog X stopped by its dead-man")) == 1
+    for action in ("EnterManual() by anna", "JogStep(axis='Y', step=10.0) by anna"):
+        assert len(_log_lines(caplog, action)) == 1
 
 
-def test_jog_refused_outside_manual_and_start_refused_in_manual(rig: Rig) -> None:
+def test_jog_refused_outside_manual_and_start_refused_in_manual(
+    rig: Rig, caplog: pytest.LogCaptureFixture
+) -> None:
+    caplog.set_level(logging.INFO, logger="app.machine")
     rig.home()
-    rig.send(cmd.JogContinuous("X", 1))
+    for _ in range(10):  # a held jog button refreshes ten times a second: one log line
+        rig.send(cmd.JogContinuous("X", 1), run_s=0.1)
     assert "Manual" in str(rig.controller.message)
+    assert len(_log_lines(caplog, "open the Manual screen to jog")) == 1
     rig.send(cmd.EnterManual())
     rig.send(cmd.Start())
     assert rig.state is MachineState.MANUAL
