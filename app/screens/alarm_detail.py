@@ -18,7 +18,6 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
     QScrollArea,
-    QScroller,
     QVBoxLayout,
     QWidget,
 )
@@ -35,6 +34,7 @@ from app.screens.texts import (
     severity_text,
 )
 from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.overlay import Overlay
 
 EPISODE_LIMIT = 200
@@ -170,7 +170,7 @@ class AlarmDetailOverlay(Overlay):
         scroll.setWidgetResizable(True)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         scroll.setFrameShape(QScrollArea.Shape.NoFrame)
-        QScroller.grabGesture(scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+        kinetic_scroll(scroll)
         self.ack_button = touch_button("detailAckButton", "primary", self.tr("Acknowledge"))
         self.ack_button.setVisible(acknowledge)
         self.ack_button.clicked.connect(self.accept)

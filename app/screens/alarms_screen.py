@@ -17,7 +17,6 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QHeaderView,
     QPushButton,
-    QScroller,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
@@ -46,6 +45,7 @@ from app.screens.texts import (
 )
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.readouts import styled_label
 
 HISTORY_LIMIT = 500
@@ -71,7 +71,7 @@ def _table(name: str, columns: int) -> QTableWidget:
     table.setWordWrap(False)
     table.horizontalHeader().setHighlightSections(False)
     table.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
-    QScroller.grabGesture(table.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+    kinetic_scroll(table)
     return table
 
 

@@ -15,7 +15,7 @@ from app.screens.texts import alarm_line, state_text
 from app.screens.theme import set_style_property
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.lamp import StatusLamp, lamp_color
-from app.screens.widgets.readouts import set_text, styled_label
+from app.screens.widgets.readouts import ElidedLinesLabel, set_text, styled_label
 
 
 class TopBar(QFrame):
@@ -31,9 +31,10 @@ class TopBar(QFrame):
         self.lamp.setObjectName("statusLamp")
         self.state_label = styled_label("", "state", "stateLabel")
         self.state_label.setMinimumWidth(170)
-        self.message_label = styled_label("", "message", "messageLabel")
-        self.message_label.setWordWrap(True)
-        self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        # Two lines at most, then an ellipsis: a long message never makes the top bar taller
+        # (that pushed every screen, and its buttons, down).
+        self.message_label = ElidedLinesLabel("message", "messageLabel")
+        self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
         self.user_button = touch_button("userButton", "bar")
         self.user_button.clicked.connect(self.userClicked)
         self.language_button = touch_button("languageButton", "bar")

@@ -13,12 +13,21 @@ from __future__ import annotations
 from dataclasses import asdict
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QFrame, QGridLayout, QHBoxLayout, QLabel, QVBoxLayout, QWidget
+from PySide6.QtWidgets import (
+    QFrame,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QScrollArea,
+    QVBoxLayout,
+    QWidget,
+)
 
 from app.machine.snapshot import IoPoint, MachineSnapshot
 from app.screens.base import Screen, ScreenContext
 from app.screens.io_status import signal_text
 from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.lamp import LampColor, StatusLamp
 from app.screens.widgets.readouts import set_text, styled_label
 
@@ -53,14 +62,24 @@ class IoScreen(Screen):
 
         self.inputs_panel, self.inputs_grid, self.inputs_title = self._panel()
         self.outputs_panel, self.outputs_grid, self.outputs_title = self._panel()
-        columns = QHBoxLayout()
+        body = QWidget()
+        columns = QHBoxLayout(body)
+        columns.setContentsMargins(0, 0, 0, 0)
         columns.setSpacing(10)
-        columns.addWidget(self.inputs_panel, 3)
-        columns.addWidget(self.outputs_panel, 2)
+        columns.addWidget(self.inputs_panel, 3, Qt.AlignmentFlag.AlignTop)
+        columns.addWidget(self.outputs_panel, 2, Qt.AlignmentFlag.AlignTop)
+        # Every signal of every backend (the pendant's too) may not fit the panel's height:
+        # the columns scroll by dragging instead of making the window grow.
+        self.signals_scroll = QScrollArea()
+        self.signals_scroll.setObjectName("ioScroll")
+        self.signals_scroll.setWidget(body)
+        self.signals_scroll.setWidgetResizable(True)
+        self.signals_scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        kinetic_scroll(self.signals_scroll)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
         layout.addLayout(header)
-        layout.addLayout(columns, 1)
+        layout.addWidget(self.signals_scroll, 1)
         self.rows: dict[str, IoRow] = {}
         self._points: tuple[IoPoint, ...] = ()
         self.retranslate()

@@ -45,7 +45,13 @@ from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.io_strip import LAMP_PX as IO_LAMP_PX
 from app.screens.widgets.io_strip import IoStrip
 from app.screens.widgets.plan_view import PlanView
-from app.screens.widgets.readouts import AxisReadout, ValueTile, set_text, styled_label
+from app.screens.widgets.readouts import (
+    AxisReadout,
+    ElidedLinesLabel,
+    ValueTile,
+    set_text,
+    styled_label,
+)
 from app.screens.widgets.step_times_bar import StepTimesBar
 
 LEFT_WIDTH_PX = 268
@@ -75,8 +81,9 @@ class MainScreen(Screen):
         inside = QVBoxLayout(self.list_button)
         inside.setContentsMargins(2, 2, 2, 2)
         inside.addWidget(self.number_label)
-        self.name_label = styled_label("", "value", "recipeName")
-        self.name_label.setWordWrap(True)
+        # Two lines kept whatever the name: a long one ends in an ellipsis and never pushes
+        # START, STOP, Home and Reset down.
+        self.name_label = ElidedLinesLabel("value", "recipeName")
         self.name_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
         for arrow in (self.prev_button, self.next_button):
             arrow.setProperty("kind", "arrow")

@@ -34,6 +34,7 @@ from app.screens.texts import machine_text, role_text
 from app.screens.theme import scale_for_size, stylesheet
 from app.screens.top_bar_message import ExpiringMessage
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import PinPad
 from app.screens.widgets.overlay import Overlay, top_overlay
 
@@ -42,6 +43,7 @@ if TYPE_CHECKING:
 
 SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms")
 NOTICE_S = 6.0
+OPERATOR_NAME_MAX_CHARS = 32
 EXIT_LEAVE_KIOSK = 64  # packaging/: the kiosk service stays down on this exit status
 
 
@@ -69,6 +71,7 @@ class MainWindow(QMainWindow):
         self._shutting_down = False
         self.exit_code = 0
         self._notice = ""
+        self._logged_in = False
         self.machine_message = ExpiringMessage()
         self.session = Session(self._default_user, parent=self)
         self.pin_checker = PinChecker(database.path, parent=self)
@@ -84,7 +87,14 @@ class MainWindow(QMainWindow):
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(0)
         layout.addWidget(self.top_bar)
-        layout.addWidget(self.banner)
+        # The banner's place is kept while no alarm is shown: its appearing never moves a
+        # button on the screen below (START, STOP, Home and Reset stay under the finger).
+        self.banner_slot = QWidget()
+        self.banner_slot.setObjectName("bannerSlot")
+        slot_layout = QVBoxLayout(self.banner_slot)
+        slot_layout.setContentsMargins(0, 0, 0, 0)
+        slot_layout.addWidget(self.banner)
+        layout.addWidget(self.banner_slot)
         layout.addWidget(self.stack, 1)
         layout.addWidget(self.nav)
 
@@ -135,6 +145,7 @@ class MainWindow(QMainWindow):
         self.resize(1024, 768)
         self.poller.start()
         self._clock_timer.start()
+        self.link.send(SetUser(self.session.name))  # the records name someone from the start
 
     # -- screens -----------------------------------------------------------------------------
 
@@ -224,7 +235,34 @@ class MainWindow(QMainWindow):
             overlay.finished.connect(lambda ok: self.session.logout() if ok else None)
             self.context.open(overlay)
             return
-        self.ask_pin(self.tr("Log in: enter your PIN"))
+        choice = ChoiceOverlay(
+            self.tr("User"),
+            [
+                (self.tr("Log in with a PIN"), "pin"),
+                (self.tr("Name the operator of this shift"), "name"),
+            ],
+        )
+        choice.chosen.connect(self._operator_choice)
+        self.context.open(choice)
+
+    def _operator_choice(self, choice: object) -> None:
+        if choice == "pin":
+            self.ask_pin(self.tr("Log in: enter your PIN"))
+        elif choice == "name":
+            self.ask_operator_name()
+
+    def ask_operator_name(self) -> TextKeyboard:
+        """The operator names himself (no PIN at operator level): every acknowledgement,
+        reset and manual action is then recorded with his name."""
+        keyboard = TextKeyboard(
+            self.tr("Operator of this shift: your name"),
+            self.session.operator_name,
+            max_length=OPERATOR_NAME_MAX_CHARS,
+            layout=self.context.keyboard_layout(),
+        )
+        keyboard.textAccepted.connect(self.session.name_operator)
+        self.context.open(keyboard)
+        return keyboard
 
     def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> PinPad:
         """Open the PIN pad; a PIN below ``required`` is refused with a message."""
@@ -276,7 +314,10 @@ class MainWindow(QMainWindow):
     def on_user_changed(self) -> None:
         self._show_user()
         self.link.send(SetUser(self.session.name))
-        if self.session.user is None:
+        was_logged_in, self._logged_in = self._logged_in, self.session.user is not None
+        if self.session.user is None and not was_logged_in:
+            self.notify(self.tr("Operator of this shift: %1").replace("%1", self.session.name))
+        elif self.session.user is None:
             self.notify(self.tr("Logged out."))
         else:
             self.notify(
@@ -289,7 +330,9 @@ class MainWindow(QMainWindow):
 
     def _show_user(self) -> None:
         if self.session.user is None:
-            self.top_bar.show_user(role_text(Role.OPERATOR))
+            name = self.session.operator_name
+            role = role_text(Role.OPERATOR)
+            self.top_bar.show_user(f"{name} · {role}" if name else role)
         else:
             role = role_text(self.session.role)
             name = self.session.name
@@ -342,6 +385,8 @@ class MainWindow(QMainWindow):
         self.scale = scale
         self.setStyleSheet(stylesheet(scale))
         self.top_bar.lamp.set_diameter(round(40 * scale))
+        self.banner.ensurePolished()
+        self.banner_slot.setFixedHeight(self.banner.sizeHint().height())
         for screen in self.screens.values():
             screen.apply_scale(scale)
 

@@ -27,7 +27,6 @@ from PySide6.QtWidgets import (
     QListWidgetItem,
     QPushButton,
     QScrollArea,
-    QScroller,
     QSizePolicy,
     QVBoxLayout,
     QWidget,
@@ -62,6 +61,7 @@ from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOv
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import set_text, styled_label
 from app.screens.width_ranges import PENDING, WidthRanges
@@ -177,9 +177,7 @@ class RecipesScreen(Screen):
         self.recipe_list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.recipe_list.setTextElideMode(Qt.TextElideMode.ElideRight)
         self.recipe_list.itemClicked.connect(self._list_clicked)
-        QScroller.grabGesture(
-            self.recipe_list.viewport(), QScroller.ScrollerGestureType.TouchGesture
-        )
+        kinetic_scroll(self.recipe_list)
         self.new_button = touch_button("newRecipe")
         self.copy_button = touch_button("copyRecipe")
         self.delete_button = touch_button("deleteRecipe", "danger")
@@ -286,9 +284,7 @@ class RecipesScreen(Screen):
         self.form_scroll.setWidget(form)
         self.form_scroll.setWidgetResizable(True)
         self.form_scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        QScroller.grabGesture(
-            self.form_scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture
-        )
+        kinetic_scroll(self.form_scroll)
         editor_layout = QVBoxLayout(editor)
         editor_layout.setContentsMargins(10, 6, 10, 8)
         editor_layout.addWidget(self.editor_title)

@@ -34,6 +34,7 @@ class Session(QObject):
         super().__init__(parent)
         self._default_user = default_user
         self.user: User | None = None
+        self.operator_name = ""  # the operator who named himself for the shift
         self._idle = QTimer(self)
         self._idle.setSingleShot(True)
         self._idle.setInterval(round(idle_logout_s * 1000))
@@ -45,7 +46,18 @@ class Session(QObject):
 
     @property
     def name(self) -> str:
-        return self.user.name if self.user is not None else "operator"
+        """Who the records and the machine log name: the logged-in user, else the operator
+        who named himself, else the operator level's account."""
+        if self.user is not None:
+            return self.user.name
+        return self.operator_name or "operator"
+
+    def name_operator(self, name: str) -> None:
+        """At operator level (no PIN): the operator of this shift says who he is; the name
+        stays until another operator names himself (a technician's login and logout keep
+        it)."""
+        self.operator_name = name.strip()
+        self.userChanged.emit()
 
     def acting_user(self) -> User | None:
         """Who the records name: the logged-in user, else the database's operator account."""

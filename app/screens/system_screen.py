@@ -21,7 +21,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QPushButton,
     QScrollArea,
-    QScroller,
     QStackedWidget,
     QTableWidget,
     QTableWidgetItem,
@@ -56,6 +55,7 @@ from app.screens.pin_lockout import PinLockoutBar
 from app.screens.texts import parameter_text, role_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keypad import NumberKeypad
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.readouts import set_text, styled_label
 
 GROUP_ORDER = ("home", "tool", "start", "motion", "path", "limits", "jog", "production")
@@ -126,7 +126,7 @@ class SystemScreen(Screen):
         scroll.setWidgetResizable(True)
         scroll.setWidget(self.param_grid_host)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        QScroller.grabGesture(scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+        kinetic_scroll(scroll)
         self.param_buttons: dict[str, QPushButton] = {}
         self.param_labels: dict[str, tuple[QLabel, QLabel]] = {}
         param_page = QFrame()
@@ -146,7 +146,7 @@ class SystemScreen(Screen):
         self.log_table.verticalHeader().setVisible(False)
         self.log_table.setAlternatingRowColors(True)
         self.log_table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        QScroller.grabGesture(self.log_table.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+        kinetic_scroll(self.log_table)
         log_layout = QVBoxLayout(log_page)
         log_layout.setContentsMargins(10, 6, 10, 8)
         log_layout.addWidget(self.log_title)

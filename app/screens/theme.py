@@ -42,7 +42,7 @@ _SIZES_PX: dict[str, float] = {
     "recipe_h": 60,
     "arrow_w": 56,
     "banner_h": 40,
-    "scroll_w": 26,
+    "scroll_w": 40,
     "progress_h": 24,
     "radius": 6,
 }

@@ -1035,7 +1035,7 @@
 <context>
     <name>FractionKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+346" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+373" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -1058,7 +1058,7 @@
 <context>
     <name>IoScreen</name>
     <message>
-        <location filename="../../app/screens/io_screen.py" line="+84" />
+        <location filename="../../app/screens/io_screen.py" line="+103" />
         <location line="+3" />
         <source>Inputs and outputs</source>
         <translation>Inputs and outputs</translation>
@@ -1924,7 +1924,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+204" />
+        <location filename="../../app/screens/main_screen.py" line="+211" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2098,18 +2098,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+172" />
+        <location filename="../../app/screens/main_window.py" line="+183" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+143" />
+        <location line="+175" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-136" />
+        <location line="-168" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -2127,15 +2127,30 @@ shift</translation>
     </message>
     <message>
         <location line="-11" />
-        <location line="+149" />
+        <location line="+183" />
         <location line="+2" />
         <source>Leave the kiosk</source>
         <translation>Leave the kiosk</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-177" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Log in with a PIN</source>
+        <translation>Log in with a PIN</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Name the operator of this shift</source>
+        <translation>Name the operator of this shift</translation>
     </message>
     <message>
         <location line="+8" />
@@ -2143,7 +2158,12 @@ shift</translation>
         <translation>Log in: enter your PIN</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+8" />
+        <source>Operator of this shift: your name</source>
+        <translation>Operator of this shift: your name</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>Wrong PIN.</source>
         <translation>Wrong PIN.</translation>
     </message>
@@ -2163,7 +2183,12 @@ shift</translation>
         <translation>This needs the %1 level: enter a PIN</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
+        <source>Operator of this shift: %1</source>
+        <translation>Operator of this shift: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Logged out.</source>
         <translation>Logged out.</translation>
     </message>
@@ -2173,7 +2198,7 @@ shift</translation>
         <translation>Logged in: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+20" />
         <location line="+22" />
         <source>Language</source>
         <translation>Language</translation>
@@ -2200,13 +2225,13 @@ shift</translation>
     </message>
     <message>
         <location line="+5" />
-        <location line="+55" />
+        <location line="+57" />
         <location line="+2" />
         <source>Shut down</source>
         <translation>Shut down</translation>
     </message>
     <message>
-        <location line="-56" />
+        <location line="-58" />
         <source>Log in or out</source>
         <translation>Log in or out</translation>
     </message>
@@ -2216,7 +2241,7 @@ shift</translation>
         <translation>Stave jointer</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+38" />
         <source>Stop the machine safely and leave the operator screen for the console?</source>
         <translation>Stop the machine safely and leave the operator screen for the console?</translation>
     </message>
@@ -2396,7 +2421,7 @@ shift</translation>
 <context>
     <name>NumberKeypad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="-229" />
+        <location filename="../../app/screens/widgets/keypad.py" line="-221" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -2746,7 +2771,7 @@ shift</translation>
 <context>
     <name>PinPad</name>
     <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+221" />
+        <location filename="../../app/screens/widgets/keypad.py" line="+206" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -2764,7 +2789,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+353" />
+        <location filename="../../app/screens/recipes_screen.py" line="+349" />
         <location line="+73" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -3612,7 +3637,7 @@ Log in as technician or service to change them.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+103" />
+        <location filename="../../app/screens/widgets/keyboard.py" line="+120" />
         <source>Space</source>
         <translation>Space</translation>
     </message>
@@ -3627,12 +3652,12 @@ Log in as technician or service to change them.</translation>
         <translation>OK</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+22" />
         <source>At most %1 characters.</source>
         <translation>At most %1 characters.</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+42" />
         <source>Enter a text.</source>
         <translation>Enter a text.</translation>
     </message>

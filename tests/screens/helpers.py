@@ -61,3 +61,12 @@ def enter_pin(qtbot, window: MainWindow, tap, pin: str) -> None:
         tap(find_button(pad, f"key_{key}"))
     tap(find_button(pad, "okButton"))
     qtbot.waitUntil(lambda: not window.pin_checker.busy, timeout=10_000)
+
+
+def open_pin_pad(qtbot, window: MainWindow, tap) -> None:
+    """At operator level the user button offers a PIN login or naming the operator: the
+    PIN pad."""
+    tap(window.top_bar.user_button)
+    choice = window.overlay()
+    assert choice is not None and choice.objectName() == "choiceOverlay"
+    tap(find_button(choice, "choice_0"))  # Log in with a PIN

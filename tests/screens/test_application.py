@@ -83,16 +83,16 @@ def test_service_user_leaves_the_kiosk_with_exit_status_64(qtbot, machine, datab
 def _leave_the_kiosk(qtbot, window, machine, tap) -> None:  # type: ignore[no-untyped-def]
     from app.screens.main_window import EXIT_LEAVE_KIOSK
     from app.screens.widgets.dialogs import ChoiceOverlay
-    from tests.screens.helpers import enter_pin, find_button
+    from tests.screens.helpers import enter_pin, find_button, open_pin_pad
 
     window.show()
-    tap(window.top_bar.user_button)
+    open_pin_pad(qtbot, window, tap)
     enter_pin(qtbot, window, tap, "1234")  # a technician is offered only Log out
     tap(window.top_bar.user_button)
     assert isinstance(window.overlay(), ConfirmOverlay)
     window.overlay().reject()
     window.session.logout()
-    tap(window.top_bar.user_button)
+    open_pin_pad(qtbot, window, tap)
     enter_pin(qtbot, window, tap, "9999")  # service
     tap(window.top_bar.user_button)
     choice = window.overlay()

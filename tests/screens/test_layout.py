@@ -3,11 +3,13 @@ Slovenian, and no button or single-line label shows less than its whole text."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from PySide6.QtCore import QSize
 from PySide6.QtWidgets import QApplication, QLabel, QPushButton, QSizePolicy, QWidget
 
-from app.machine.commands import InjectFault
+from app.machine.commands import InjectFault, SelectRecipe
 from app.screens.main_window import SCREEN_KEYS
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
@@ -80,3 +82,49 @@ def test_the_check_sees_a_cut_button_and_label(qtbot, host) -> None:
     problems = cut_texts(host)
     assert len(problems) == 2
     assert "Referenciraj" in problems[0] and "Razmerje" in problems[1]
+
+
+PRIMARY_BUTTONS = ("startButton", "stopButton", "homeButton", "resetButton")
+
+
+def primary_geometry(window) -> dict[str, tuple[int, int, int, int]]:  # type: ignore[no-untyped-def]
+    QApplication.processEvents()
+    found: dict[str, tuple[int, int, int, int]] = {}
+    for name in PRIMARY_BUTTONS:
+        button = window.findChild(QPushButton, name)
+        corner = button.mapTo(window, button.rect().topLeft())
+        found[name] = (corner.x(), corner.y(), button.width(), button.height())
+    return found
+
+
+def test_start_stop_home_reset_never_move(qtbot, window, machine, database) -> None:
+    """The banner appearing and a recipe name of many lines leave the four primary buttons
+    exactly where they were (they moved by up to 74 px, so a tap meant for Home hit Reset)."""
+    window.show_screen("main")
+    recipe = database.list_recipes()[0]
+    machine.send(SelectRecipe(recipe.id))
+    wait_for(qtbot, window, lambda s: s.recipe_id == recipe.id)
+    before = primary_geometry(window)
+    long_name = "Pièce 228 l Bourgogne, chêne de Tronçais"  # 40 characters, the most allowed
+    operator = database.list_users()[0]
+    long_recipe = database.save_recipe(replace(recipe, id=None, name=long_name), operator)
+    window.page("main").reload_recipes()
+    machine.send(SelectRecipe(long_recipe.id))
+    wait_for(qtbot, window, lambda s: s.recipe_id == long_recipe.id)
+    assert window.page("main").name_label.text() == long_recipe.name
+    assert primary_geometry(window) == before
+    machine.send(InjectFault("drive_fault", "X"))
+    wait_for(qtbot, window, lambda s: bool(s.alarms))
+    assert window.banner.isVisible()
+    assert primary_geometry(window) == before
+
+
+def test_a_keypad_keeps_its_size_when_it_shows_an_error(qtbot, host) -> None:
+    pad = NumberKeypad("Thickness H", 27, 25, 90, "mm")
+    pad.open_on(host)
+    QApplication.processEvents()
+    size = pad.panel.size()
+    pad.error_label.setText("120 is out of range: allowed 25 to 90 mm " * 3)
+    QApplication.processEvents()
+    assert pad.panel.size() == size
+    pad.reject()

@@ -15,13 +15,15 @@ from app.data.database import Database
 from app.data.records import AlarmState as AlarmRecordState
 from app.data.records import format_utc
 from app.data.users import Role
+from app.machine.commands import InjectFault
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
 from app.screens.alarm_detail import AlarmDetailOverlay
 from app.screens.texts import alarm_help, machine_text
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.keypad import NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button, wait_for
+from tests.screens.helpers import enter_pin, find_button, open_pin_pad, wait_for
 
 
 def keys(tap, overlay, text: str) -> None:
@@ -30,7 +32,7 @@ def keys(tap, overlay, text: str) -> None:
 
 
 def log_in(qtbot, window, tap, pin: str) -> None:
-    tap(find_button(window, "userButton"))
+    open_pin_pad(qtbot, window, tap)
     assert isinstance(window.overlay(), PinPad)
     enter_pin(qtbot, window, tap, pin)
     assert window.overlay() is None
@@ -186,6 +188,34 @@ def test_acknowledge_an_alarm_and_reset(qtbot, window, database, tap) -> None:
     assert window.session.name in old_detail.history_label.text()
     tap(old_detail.close_button)
     window.session.logout()
+
+
+def test_the_operator_names_himself_and_is_recorded(qtbot, window, database, tap) -> None:
+    """No PIN at operator level: the operator of the shift names himself, and his
+    acknowledgement is stored with that name (it was stored with none)."""
+    tap(window.top_bar.user_button)
+    choice = window.overlay()
+    assert isinstance(choice, ChoiceOverlay)
+    tap(find_button(choice, "choice_1"))  # Name the operator of this shift
+    keyboard = window.overlay()
+    assert isinstance(keyboard, TextKeyboard)
+    keys(tap, keyboard, "ana")
+    tap(find_button(keyboard, "okButton"))
+    assert window.overlay() is None
+    assert window.session.name == "ana" and "ana" in window.top_bar.user_button.text()
+    window.link.send(InjectFault("drive_fault", "X"))  # the simulation menu's fault
+    alarmed = wait_for(qtbot, window, lambda s: bool(s.alarms))
+    window.show_screen("alarms")
+    ack = window.page("alarms").ack_button(alarmed.alarms[0].alarm_id)
+    assert ack is not None
+    tap(ack)
+    wait_for(qtbot, window, lambda s: s.unacknowledged_alarms == 0)
+    acks = [
+        e
+        for e in database.list_alarm_events()
+        if e.to_state.value in ("active_acked", "normal") and e.from_state.value != "normal"
+    ]
+    assert acks and {e.user_name for e in acks} == {"ana"}
 
 
 # -- system ----------------------------------------------------------------------------------

@@ -15,11 +15,11 @@ from PySide6.QtWidgets import (
     QLabel,
     QPushButton,
     QScrollArea,
-    QScroller,
     QWidget,
 )
 
 from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.overlay import Overlay
 
 
@@ -121,7 +121,7 @@ class ChoiceOverlay(Overlay):
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         scroll.setMinimumWidth(560)
         scroll.setMinimumHeight(min(440, 66 * max(1, (len(choices) + columns - 1) // columns)))
-        QScroller.grabGesture(scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+        kinetic_scroll(scroll)
         self.cancel_button = touch_button("cancelButton", text=self.tr("Cancel"))
         self.cancel_button.clicked.connect(self.reject)
         self.panel_layout.addWidget(title_label)

@@ -18,12 +18,12 @@ from PySide6.QtWidgets import (
     QLabel,
     QListWidget,
     QListWidgetItem,
-    QScroller,
     QWidget,
 )
 
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keyboard import TextKeyboard
+from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.overlay import Overlay
 
 EXCHANGE_DIR_ENV = "STAVE_EXCHANGE_DIR"
@@ -99,7 +99,7 @@ class FileChooser(Overlay):
         self.entries.setMinimumSize(640, 300)
         self.entries.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.entries.itemClicked.connect(self._clicked)
-        QScroller.grabGesture(self.entries.viewport(), QScroller.ScrollerGestureType.TouchGesture)
+        kinetic_scroll(self.entries)
         self.name_button = touch_button("fileNameButton", "field")
         self.name_button.clicked.connect(self.edit_name)
         self.name_button.setVisible(save_name is not None)

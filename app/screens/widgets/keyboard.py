@@ -1,7 +1,11 @@
 """A simple on-screen keyboard for short texts (recipe names, notes, filters).
 
 Why QWERTZ with č, š, ž in Slovenian: that is the keyboard a Slovenian operator knows, and
-recipe names use those letters; English gets QWERTY.
+recipe names use those letters; English gets QWERTY, and č, š, ž too (a Slovenian name typed
+on the English interface). Why an accent key: the sample recipes are French ("Pièce 228 l
+Bourgogne"); each tap of the accent key puts the next accent on the vowels and c, n, y
+(grave, acute, circumflex, diaeresis, cedilla and tilde), the next letter typed takes it and
+the keys return to plain letters.
 """
 
 from __future__ import annotations
@@ -18,11 +22,20 @@ from app.screens.widgets.overlay import Overlay
 TextCheck = Callable[[str], str]
 
 LAYOUTS: dict[str, tuple[str, ...]] = {
-    "qwerty": ("1234567890", "qwertyuiop", "asdfghjkl", "zxcvbnm"),
+    "qwerty": ("1234567890", "qwertyuiopš", "asdfghjklčž", "zxcvbnm"),
     "qwertz": ("1234567890", "qwertzuiopš", "asdfghjklčž", "yxcvbnm"),
 }
 
 PUNCTUATION = "-_/.,()+#"
+
+# The accents the accent key steps through, each as plain letter -> accented letter.
+ACCENTS: tuple[dict[str, str], ...] = (
+    dict(zip("aeiou", "àèìòù", strict=True)),
+    dict(zip("aeiouyc", "áéíóúýć", strict=True)),
+    dict(zip("aeiou", "âêîôû", strict=True)),
+    dict(zip("aeiouy", "äëïöüÿ", strict=True)),
+    dict(zip("cn", "çñ", strict=True)),
+)
 
 
 class TextKeyboard(Overlay):
@@ -48,6 +61,7 @@ class TextKeyboard(Overlay):
         self.text = text
         self.max_length = max_length
         self.shift = False
+        self.accent = -1  # index into ACCENTS, -1: plain letters
         self._check = check
         self.title_label = QLabel(title)
         self.title_label.setProperty("role", "title")
@@ -76,6 +90,8 @@ class TextKeyboard(Overlay):
         self.shift_button = key_button("⇧", "smallkey", name="key_shift")
         self.shift_button.setCheckable(True)
         self.shift_button.toggled.connect(self._set_shift)
+        self.accent_button = key_button("´`^", "smallkey", name="key_accent")
+        self.accent_button.clicked.connect(self.next_accent)
         self.space_button = key_button("", "smallkey", name="key_space")
         self.space_button.clicked.connect(lambda: self.type_char(" "))
         self.backspace_button = key_button("⌫", "smallkey", name="key_backspace")
@@ -84,6 +100,7 @@ class TextKeyboard(Overlay):
         self.clear_button.clicked.connect(self.clear)
         self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
         bottom.addWidget(self.shift_button)
+        bottom.addWidget(self.accent_button)
         bottom.addWidget(self.space_button, 3)
         bottom.addWidget(self.backspace_button)
         bottom.addWidget(self.clear_button)
@@ -106,8 +123,20 @@ class TextKeyboard(Overlay):
 
     def _set_shift(self, on: bool) -> None:
         self.shift = on
+        self._label_keys()
+
+    def next_accent(self) -> None:
+        """The next accent on the letters that take it (after the last: plain again)."""
+        self.accent = self.accent + 1 if self.accent + 1 < len(ACCENTS) else -1
+        self._label_keys()
+
+    def _letter(self, char: str) -> str:
+        accented = ACCENTS[self.accent].get(char, char) if self.accent >= 0 else char
+        return accented.upper() if self.shift else accented
+
+    def _label_keys(self) -> None:
         for char, button in self.letter_keys.items():
-            button.setText(char.upper() if on else char)
+            button.setText(self._letter(char))
 
     def type_char(self, char: str) -> None:
         if len(self.text) >= self.max_length:
@@ -115,7 +144,10 @@ class TextKeyboard(Overlay):
                 self.tr("At most %1 characters.").replace("%1", str(self.max_length))
             )
             return
-        self.text += char.upper() if self.shift else char
+        self.text += self._letter(char) if char in self.letter_keys else char
+        if self.accent >= 0:
+            self.accent = -1
+            self._label_keys()
         if self.shift:
             self.shift_button.setChecked(False)
         self.error_label.setText("")

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QKeyEvent, QMouseEvent
@@ -21,6 +22,7 @@ from app.screens.formatting import format_number
 from app.screens.theme import set_style_property
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.overlay import Overlay
+from app.screens.widgets.readouts import FixedLinesLabel
 
 NumberCheck = Callable[[float], str]
 FractionCheck = Callable[[int, int], str]
@@ -43,11 +45,9 @@ def _label(text: str, role: str) -> QLabel:
 
 
 def error_label() -> QLabel:
-    """The red line under an entry that says why OK was refused (empty while all is well)."""
-    label = _label("", "error")
-    label.setObjectName("errorLabel")
-    label.setWordWrap(True)
-    return label
+    """The red line under an entry that says why OK was refused (empty while all is well);
+    its two lines are kept while it is empty, so the keypad does not grow when it speaks."""
+    return FixedLinesLabel("error", "errorLabel")
 
 
 def typing_key(text: str, key: str, press: Callable[[str], None], name: str = "") -> QPushButton:
@@ -77,6 +77,44 @@ def answer_keys(overlay: Overlay, confirm: Callable[[], None]) -> tuple[QPushBut
     ok = key_button("", "primary", name="okButton")
     ok.clicked.connect(confirm)
     return cancel, ok
+
+
+@dataclass
+class KeyBlock:
+    """The one key layout of every keypad (PIN, number, fraction), so that a key is always
+    in the same place under the finger: digits 7-8-9 / 4-5-6 / 1-2-3 from the top, 0 below
+    the 2 with the keypad's own key on each side of it (sign and point, the fraction's
+    slash), and down the right ⌫, C, Cancel, OK."""
+
+    grid: QGridLayout
+    keys: dict[str, QPushButton]
+    backspace_button: QPushButton
+    clear_button: QPushButton
+    cancel_button: QPushButton
+    ok_button: QPushButton
+
+
+def key_block(
+    overlay: Overlay,
+    press: Callable[[str], None],
+    confirm: Callable[[], None],
+    left: QPushButton | None = None,
+    right: QPushButton | None = None,
+) -> KeyBlock:
+    grid = QGridLayout()
+    grid.setSpacing(8)
+    keys = digit_keys(grid, DIGIT_ROWS, press)
+    keys["0"] = typing_key("0", "0", press)
+    grid.addWidget(keys["0"], 3, 1)
+    for button, column in ((left, 0), (right, 2)):
+        if button is not None:
+            grid.addWidget(button, 3, column)
+    backspace = typing_key("⌫", "back", press, "key_backspace")
+    clear = typing_key("C", "clear", press, "key_clear")
+    cancel, ok = answer_keys(overlay, confirm)
+    for row, button in enumerate((backspace, clear, cancel, ok)):
+        grid.addWidget(button, row, 3)
+    return KeyBlock(grid, keys, backspace, clear, cancel, ok)
 
 
 class ClickableLabel(QLabel):
@@ -146,16 +184,13 @@ class NumberKeypad(Overlay):
         self.display.setMinimumWidth(360)
         self.error_label = error_label()
 
-        grid = QGridLayout()
-        grid.setSpacing(8)
-        self.keys = digit_keys(grid, (*DIGIT_ROWS, ("±", "0", ".")), self.press)
-        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
-        self.clear_button = typing_key("C", "clear", self.press, "key_clear")
-        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
-        grid.addWidget(self.backspace_button, 0, 3)
-        grid.addWidget(self.clear_button, 1, 3)
-        grid.addWidget(self.cancel_button, 2, 3)
-        grid.addWidget(self.ok_button, 3, 3)
+        sign = typing_key("±", "±", self.press)
+        point = typing_key(".", ".", self.press)
+        block = key_block(self, self.press, self.confirm, sign, point)
+        grid = block.grid
+        self.keys = {**block.keys, "±": sign, ".": point}
+        self.backspace_button, self.clear_button = block.backspace_button, block.clear_button
+        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
         self.keys["±"].setEnabled(minimum < 0)
         self.keys["."].setEnabled(not integer)
 
@@ -318,21 +353,13 @@ class FractionKeypad(Overlay):
         row.addWidget(self.decimal_label, 1)
         self.error_label = error_label()
 
-        grid = QGridLayout()
-        grid.setSpacing(8)
-        self.keys = digit_keys(grid, DIGIT_ROWS, self.press)
-        zero = self.keys["0"] = typing_key("0", "0", self.press)
         self.slash_button = key_button("/", name="key_slash")
         self.slash_button.clicked.connect(lambda: self.select(1 - self.active))
-        grid.addWidget(self.slash_button, 3, 0)
-        grid.addWidget(zero, 3, 1, 1, 2)
-        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
-        grid.addWidget(self.backspace_button, 0, 3)
-        self.clear_button = typing_key("C", "clear", self.press, "key_clear")
-        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
-        grid.addWidget(self.clear_button, 1, 3)
-        grid.addWidget(self.cancel_button, 2, 3)
-        grid.addWidget(self.ok_button, 3, 3)
+        block = key_block(self, self.press, self.confirm, self.slash_button)
+        grid = block.grid
+        self.keys = block.keys
+        self.backspace_button, self.clear_button = block.backspace_button, block.clear_button
+        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
 
         self.panel_layout.addWidget(self.title_label)
         self.panel_layout.addWidget(self.range_label)
@@ -441,18 +468,11 @@ class PinPad(Overlay):
         self.display.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.display.setMinimumWidth(320)
         self.error_label = error_label()
-        grid = QGridLayout()
-        grid.setSpacing(8)
-        self.keys = digit_keys(grid, DIGIT_ROWS, self.press)
-        zero = self.keys["0"] = typing_key("0", "0", self.press)
-        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
-        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
-        grid.addWidget(self.backspace_button, 3, 0)
-        grid.addWidget(zero, 3, 1)
-        grid.addWidget(self.cancel_button, 3, 2)
-        grid.addWidget(self.ok_button, 3, 3)
-        clear = typing_key("C", "clear", self.press, "key_clear")
-        grid.addWidget(clear, 0, 3)
+        block = key_block(self, self.press, self.confirm)
+        grid = block.grid
+        self.keys = block.keys
+        self.backspace_button = block.backspace_button
+        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
         self.panel_layout.addWidget(self.title_label)
         self.panel_layout.addWidget(self.display)
         self.panel_layout.addWidget(self.error_label)

@@ -49,6 +49,9 @@ class Overlay(QWidget):
         self.show()
         self.raise_()
         self.setFocus(Qt.FocusReason.PopupFocusReason)
+        # A fixed size from the moment it opens: an error line or a longer text inside it
+        # never makes it grow or jump under the finger (its lines are reserved).
+        self.panel.setFixedSize(self.panel.sizeHint().boundedTo(host.size()))
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         if watched is self._host and event.type() == QEvent.Type.Resize and self._host:

@@ -6,7 +6,8 @@ the same text still costs a relayout; comparing first keeps an idle screen nearl
 
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, Qt
+from PySide6.QtCore import QEvent, QRect, Qt
+from PySide6.QtGui import QPainter, QPaintEvent, QPalette, QTextLayout
 from PySide6.QtWidgets import (
     QAbstractButton,
     QFrame,
@@ -34,19 +35,17 @@ def styled_label(text: str, role: str, name: str = "") -> QLabel:
     return label
 
 
-REASON_LINES = 2
+class FixedLinesLabel(QLabel):
+    """A wrapped label whose height is kept for ``lines`` lines whether it is empty or not,
+    so that nothing below it moves when a text appears (a refusal's reason, an error under
+    a keypad's entry); it follows the font the theme gives it."""
 
-
-class ReasonLabel(QLabel):
-    """Why the control above it is refused, in words on the screen (a touch screen shows
-    no tooltips). Its height is kept for two lines whether it is empty or not, so that the
-    controls below never move when a reason appears; it follows the font the theme gives."""
-
-    def __init__(self, name: str, parent: QWidget | None = None) -> None:
+    def __init__(self, role: str, name: str, lines: int = 2, parent: QWidget | None = None):
         super().__init__(parent)
         self.setObjectName(name)
-        self.setProperty("role", "reason")
+        self.setProperty("role", role)
         self.setWordWrap(True)
+        self.lines = lines
         self._fit()
 
     def changeEvent(self, event: QEvent) -> None:
@@ -55,13 +54,52 @@ class ReasonLabel(QLabel):
             self._fit()
 
     def _fit(self) -> None:
-        height = REASON_LINES * self.fontMetrics().lineSpacing()
+        height = self.lines * self.fontMetrics().lineSpacing()
         if self.minimumHeight() != height or self.maximumHeight() != height:
             self.setFixedHeight(height)
 
 
-def reason_label(name: str) -> ReasonLabel:
-    return ReasonLabel(name)
+class ElidedLinesLabel(FixedLinesLabel):
+    """A FixedLinesLabel that ends its last line with an ellipsis when the text needs more
+    lines (a long recipe name): ``text()`` stays the whole text."""
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        text = self.text()
+        area = self.contentsRect()
+        metrics = self.fontMetrics()
+        layout = QTextLayout(text, self.font())
+        layout.beginLayout()
+        spans: list[tuple[int, int]] = []
+        while len(spans) <= self.lines:
+            line = layout.createLine()
+            if not line.isValid():
+                break
+            line.setLineWidth(area.width())
+            spans.append((line.textStart(), line.textLength()))
+        layout.endLayout()
+        shown: list[str] = []
+        for index, (start, length) in enumerate(spans[: self.lines]):
+            if index == self.lines - 1 and len(spans) > self.lines:
+                shown.append(
+                    metrics.elidedText(text[start:], Qt.TextElideMode.ElideRight, area.width())
+                )
+            else:
+                shown.append(text[start : start + length].strip())
+        painter = QPainter(self)
+        painter.setPen(self.palette().color(QPalette.ColorRole.WindowText))
+        painter.setFont(self.font())
+        step = metrics.lineSpacing()
+        top = area.top() + (area.height() - step * len(shown)) // 2
+        for index, line_text in enumerate(shown):
+            row = QRect(area.left(), top + index * step, area.width(), step)
+            painter.drawText(row, int(self.alignment()), line_text)
+        painter.end()
+
+
+def reason_label(name: str) -> FixedLinesLabel:
+    """Why the control above it is refused, in words on the screen (a touch screen shows
+    no tooltips)."""
+    return FixedLinesLabel("reason", name)
 
 
 class AxisReadout(QFrame):
@@ -83,7 +121,10 @@ class AxisReadout(QFrame):
         )
         self.value_label.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
         self.value_label.setProperty("homed", "true")
-        self.unit_label = styled_label(unit, "caption")
+        # The degree sign belongs at the top of the digits, in their size (a small caption
+        # on the baseline read as a stray circle); mm is a caption beside them.
+        degree = unit == "°"
+        self.unit_label = styled_label(unit, "position" if degree else "caption")
         self.tag_label = styled_label("", "tag", f"homedTag{axis}")
         self.tag_label.setVisible(False)
         top = QHBoxLayout()
@@ -94,7 +135,8 @@ class AxisReadout(QFrame):
         bottom = QHBoxLayout()
         bottom.setContentsMargins(0, 0, 0, 0)
         bottom.addWidget(self.value_label, 1)
-        bottom.addWidget(self.unit_label, 0, Qt.AlignmentFlag.AlignBottom)
+        unit_at = Qt.AlignmentFlag.AlignTop if degree else Qt.AlignmentFlag.AlignBottom
+        bottom.addWidget(self.unit_label, 0, unit_at)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(10, 4, 10, 4)
         layout.setSpacing(0)
