@@ -51,7 +51,8 @@ class Overlay(QWidget):
         self.setFocus(Qt.FocusReason.PopupFocusReason)
         # A fixed size from the moment it opens: an error line or a longer text inside it
         # never makes it grow or jump under the finger (its lines are reserved).
-        self.panel.setFixedSize(self.panel.sizeHint().boundedTo(host.size()))
+        if self.panel.minimumSize() != self.panel.maximumSize():  # not fixed by its maker
+            self.panel.setFixedSize(self.panel.sizeHint().boundedTo(host.size()))
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         if watched is self._host and event.type() == QEvent.Type.Resize and self._host:
