@@ -117,7 +117,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     language = args.lang or config.language
     if args.screenshots is not None:
-        return _screenshots(config, db_path, args.screenshots, size)
+        return _screenshots(config, db_path, args.screenshots, size, language)
 
     if config.backend != "sim":
         with Database.open(db_path) as database:
@@ -181,7 +181,9 @@ def _quit_on_sigterm() -> None:
     timer.start(200)
 
 
-def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tuple[int, int]) -> int:
+def _screenshots(
+    config: MachineConfig, db_path: Path, out_dir: Path, size: tuple[int, int], language: str
+) -> int:
     """Screenshots run the real machine in-process on a simulated clock, so that the states
     they show (a cycle running, an alarm active) are reached quickly and reproducibly, on a
     copy of the database (the user's recipes, nothing written back)."""
@@ -200,7 +202,7 @@ def _screenshots(config: MachineConfig, db_path: Path, out_dir: Path, size: tupl
         link = LocalMachineLink.create(config.with_backend("sim", "sim"), shot_db)
         try:
             with Database.open(shot_db, limits=stave_limits(config)) as database:
-                paths = render_screenshots(out_dir, size, link, database)
+                paths = render_screenshots(out_dir, size, link, database, language=language)
         finally:
             link.close()
     for path in paths:
