@@ -33,6 +33,7 @@ from app.screens.texts import (
     machine_text,
     severity_text,
 )
+from app.screens.theme import scale_for_size
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.overlay import Overlay
@@ -118,7 +119,6 @@ class AlarmDetailOverlay(Overlay):
     ) -> None:
         super().__init__(parent)
         self.setObjectName("alarmDetailOverlay")
-        self.panel.setFixedSize(*DETAIL_SIZE_PX)
         self.title_label = _paragraph(
             f"{facts.code}  {alarm_title(facts.code)}", "alarmDetailTitle", "title"
         )
@@ -183,6 +183,15 @@ class AlarmDetailOverlay(Overlay):
         buttons.addWidget(self.close_button)
         buttons.addWidget(self.ack_button)
         self.panel_layout.addLayout(buttons)
+
+    def open_on(self, host: QWidget) -> None:
+        """A fixed size in the panel's scale (the fonts grow on a larger screen, so does
+        the view), never larger than the window."""
+        window = host.window()
+        scale = scale_for_size(window.width(), window.height())
+        width, height = (round(px * scale) for px in DETAIL_SIZE_PX)
+        self.panel.setFixedSize(min(width, host.width()), min(height, host.height()))
+        super().open_on(host)
 
 
 def history_filter(facts: AlarmFacts) -> AlarmEventFilter:
