@@ -12,7 +12,7 @@ from app.machine.refusals import Reason, Refusal
 def test_a_held_jog_is_one_action_until_released_or_stopped() -> None:
     log = ActionLog()
     press = cmd.JogContinuous("X", 1)
-    assert log.accepted(press, "anna") == "JogContinuous(axis='X', direction=1) by anna"
+    assert log.accepted(press, "anna") == f"{press} by anna"
     assert log.accepted(press, "anna") is None  # the held button's refresh
     assert log.accepted(cmd.JogContinuous("X", -1), "anna") is not None  # the other way
     assert log.accepted(cmd.JogRelease("X"), "anna") is None
@@ -20,7 +20,7 @@ def test_a_held_jog_is_one_action_until_released_or_stopped() -> None:
     log.stopped("X")  # the dead-man stopped it: pressing again is a new action
     assert log.accepted(press, "anna") is not None
     log.stopped_all()
-    assert log.accepted(press, "") == f"JogContinuous(axis='X', direction=1) by {NO_USER}"
+    assert log.accepted(press, "") == f"{press} by {NO_USER}"
 
 
 def test_every_other_command_is_logged_each_time_with_its_user() -> None:

@@ -184,7 +184,7 @@ def test_manual_jog_hold_release_and_deadman(rig: Rig, caplog: pytest.LogCapture
     assert rig.state is MachineState.READY
     # The machine log: each held jog once (not each refresh), the dead-man stop once, every
     # action with the user at the panel.
-    jogs = _log_lines(caplog, "JogContinuous(axis='X', direction=1) by anna")
+    jogs = _log_lines(caplog, f"{cmd.JogContinuous('X', +1)} by anna")
     assert len(jogs) == 2
     assert len(_log_lines(caplog, "jog X stopped by its dead-man")) == 1
     for action in ("EnterManual() by anna", "JogStep(axis='Y', step=10.0) by anna"):
