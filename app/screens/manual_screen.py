@@ -151,7 +151,7 @@ class ManualScreen(Screen):
             self.step_buttons[size] = button
 
         jog_layout = QVBoxLayout(jog_panel)
-        jog_layout.setContentsMargins(12, 8, 12, 12)
+        jog_layout.setContentsMargins(12, 4, 12, 6)
         mode_row = QHBoxLayout()
         mode_row.addWidget(self.mode_label, 1)
         mode_row.addWidget(self.enter_button)
@@ -203,12 +203,12 @@ class ManualScreen(Screen):
         self.spindle_button.clicked.connect(self.toggle_spindle)
         actions.addWidget(self.clamps_button, 1, 0, 1, 2)
         actions.addWidget(self.spindle_button, 1, 2, 1, 2)
-        # Why homing, clamps or spindle are refused, under them: a touch screen shows no
-        # tooltips (the jog's reason is in the mode line above the cross).
+        # Why jogging, homing, clamps or spindle are refused, under them: a touch screen
+        # shows no tooltips.
         self.reason_label = reason_label("manualReason")
 
         right = QVBoxLayout()
-        right.setSpacing(6)
+        right.setSpacing(4)
         right.addWidget(speed_panel)
         right.addWidget(self.step_caption)
         right.addLayout(steps)
@@ -395,9 +395,7 @@ class ManualScreen(Screen):
         self.snapshot = snapshot
         manual = snapshot.state is MachineState.MANUAL
         jog_reason = refusal(snapshot, "JogContinuous")
-        if manual and jog_reason:
-            set_text(self.mode_label, self.tr("Manual mode:") + " " + jog_reason)
-        elif manual:
+        if manual:
             set_text(self.mode_label, self.tr("Manual mode: hold a button to jog."))
         else:
             reason = refusal(snapshot, "EnterManual")
@@ -441,7 +439,12 @@ class ManualScreen(Screen):
         spindle_on = snapshot.outputs.spindle_on
         # Switching the spindle off is always offered while it runs.
         self.spindle_button.setEnabled(spindle_on or not spindle_reason)
-        reasons = (home_reason, clamps_reason, "" if spindle_on else spindle_reason)
+        reasons = (
+            jog_reason if manual else "",
+            home_reason,
+            clamps_reason,
+            "" if spindle_on else spindle_reason,
+        )
         set_text(self.reason_label, "; ".join(dict.fromkeys(r for r in reasons if r)))
         set_text(
             self.spindle_button, self.tr("Spindle OFF") if spindle_on else self.tr("Spindle ON")
