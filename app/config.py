@@ -24,6 +24,7 @@ from typing import Any
 from app.pendant_settings import PendantSettings, read_pendant_settings
 from app.plant.settings import OpcuaSettings, read_opcua_settings
 from app.resources import resource_path
+from app.table_outlines import TableDevices, read_table_devices
 
 DEFAULT_CONFIG_NAME = "machine.toml"
 
@@ -110,6 +111,17 @@ class Section:
     def table(self, name: str) -> Section:
         self._used.add(name)
         return Section(self._data.get(name, {}), self._key(name), self._source)
+
+    def table_list(self, name: str, maximum: int) -> list[Section]:
+        """An array of tables (``name = [{...}, {...}]``), each checked like a table; the
+        keys in messages read ``path.name[0].key``."""
+        self._used.add(name)
+        value = self._data.get(name, [])
+        if not isinstance(value, list) or len(value) > maximum:
+            raise self.error(name, value, f"a list of at most {maximum} tables")
+        return [
+            Section(item, f"{self._key(name)}[{i}]", self._source) for i, item in enumerate(value)
+        ]
 
     def raw_table(self, name: str) -> dict[str, Any]:
         """A table handed over unchecked to the module that owns it (a backend's settings)."""
@@ -240,6 +252,7 @@ class MachineConfig:
     opcua: OpcuaSettings = field(default_factory=OpcuaSettings)
     pendant: PendantSettings = field(default_factory=PendantSettings)
     cycle: CycleConfig = field(default_factory=CycleConfig)
+    table_devices: TableDevices = field(default_factory=TableDevices)
 
     def with_backend(self, backend: str | None = None, gauge: str | None = None) -> MachineConfig:
         """The same configuration with the backends chosen on the command line."""
@@ -398,6 +411,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
     opcua = read_opcua_settings(root.table("opcua"))
     pendant = read_pendant_settings(root.table("pendant"))
     cycle = _read_cycle(root.table("cycle"))
+    table_devices = read_table_devices(root.table("keep_out"))
 
     root.finish()
     return MachineConfig(
@@ -417,6 +431,7 @@ def parse_config(data: Mapping[str, Any], source: str = "") -> MachineConfig:
         opcua=opcua,
         pendant=pendant,
         cycle=cycle,
+        table_devices=table_devices,
     )
 
 

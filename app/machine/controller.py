@@ -257,11 +257,19 @@ class MachineController(CycleControl):
 
     def _board_keep_out(self) -> TableKeepOut | None:
         """The board on the table (part sensor or clamps) as far as it is known: the widest
-        the table takes, of the recipe's length; None when the table is empty."""
-        if not (self.inputs.part_present or self.inputs.clamps_closed):
-            return None
+        the table takes, of the recipe's length; and the clamps and the centering device
+        where their sensors say they are. None when nothing is in the way."""
+        board = self.inputs.part_present or self.inputs.clamps_closed
+        devices = self.config.table_devices.in_the_way(
+            board_on_table=board,
+            clamps_closed=self.inputs.clamps_closed,
+            centering_retracted=self.inputs.centering_retracted,
+        )
+        limits = stave_limits(self.config)
+        if not board:
+            return TableKeepOut.devices_only(devices, self.params, limits) if devices else None
         length = self.recipe.length_mm if self.recipe is not None else None
-        return TableKeepOut.largest_board(self.params, stave_limits(self.config), length)
+        return TableKeepOut.largest_board(self.params, limits, length, devices)
 
     def _stop(self) -> None:
         if self.now_s - self._last_stop_s < STOP_LOCKOUT_S:

@@ -39,7 +39,7 @@ def homing_clearance(
         )
     # Homing Z swings the tilt to its switch where the cutter then stands: clear of that too.
     swing = abs(axes["Z"].home_switch_position) if "Z" in homing else 0.0
-    box = keep_out.box(max(abs(upright[2]), swing))
+    box = keep_out.extent(max(abs(upright[2]), swing))
     y = axes["Y"]
     below = y.homing_direction < 0
     clear_y = box.y_min - keep_out.clearance_mm if below else box.y_max + keep_out.clearance_mm

@@ -3,8 +3,9 @@
 Why the jog is checked too: the keep-out model (:mod:`app.machine.planner.keepout`) keeps every
 move the machine makes on its own clear of the clamped board; a jog is the operator's move,
 but a button held a moment too long drives the turning cutter (or a travel) into the board
-just the same. So with a board on the table a continuous jog stops at the edge of the board's
-keep-out box, and a step that would end in it or cross it is refused. A pivot already inside
+just the same. So with a board on the table a continuous jog stops at the edge of the nearest
+keep-out box (the board's, a closed clamp's, the centering device's while it is out), and a
+step that would end in one or cross it is refused. A pivot already inside
 the box (a cut stopped on the board) may be jogged anywhere: the operator has to get it out.
 """
 
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from app.geometry.toolpath import KeepOutBox
 from app.machine.planner.keepout import TableKeepOut
 
 _TILT_BISECTIONS = 40  # 2^-40 of the tilt range: far below a micro-degree
@@ -25,7 +27,14 @@ def jog_reach(keep_out: TableKeepOut, xyz: Sequence[float], axis: str, target: f
         return target
     if axis == "Z":
         return _tilt_reach(keep_out, x, y, z, target)
-    box = keep_out.box(z)
+    reach = target
+    for _, box in keep_out.boxes(z):
+        reach = _linear_reach(box, axis, x, y, reach)
+    return reach
+
+
+def _linear_reach(box: KeepOutBox, axis: str, x: float, y: float, target: float) -> float:
+    """How far an X or Y jog from (x, y) toward ``target`` goes before ``box``."""
     here, across, low, high, band_low, band_high = (
         (x, y, box.x_min, box.x_max, box.y_min, box.y_max)
         if axis == "X"

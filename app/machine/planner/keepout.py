@@ -25,7 +25,7 @@ from __future__ import annotations
 import heapq
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import pairwise
 
 from app.geometry.limits import StaveLimits
@@ -35,6 +35,7 @@ from app.machine.planner.chunk import Chunk
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.point_to_point import point_to_point_chunk
 from app.machine.planner.trajectory import Phase, PlannerError
+from app.table_outlines import TableOutline
 
 XYZ = tuple[float, float, float]
 
@@ -56,6 +57,8 @@ class TableKeepOut:
     clearance_mm: float
     x_travel_mm: tuple[float, float] = (-math.inf, math.inf)
     y_travel_mm: tuple[float, float] = (-math.inf, math.inf)
+    devices: tuple[TableOutline, ...] = ()  # clamps, centering device: those in the way now
+    board_on_table: bool = True  # False: only ``devices`` (the table is empty)
 
     @classmethod
     def for_board(
@@ -64,6 +67,7 @@ class TableKeepOut:
         width_mm: float,
         params: Mapping[str, float],
         limits: StaveLimits | None = None,
+        devices: Sequence[TableOutline] = (),
     ) -> TableKeepOut:
         """From the system parameters (P0, tool radius, machine height, clearance)."""
         x_travel = (-math.inf, math.inf)
@@ -81,19 +85,34 @@ class TableKeepOut:
             clearance_mm=float(params["tilt_clearance_mm"]),
             x_travel_mm=x_travel,
             y_travel_mm=y_travel,
+            devices=tuple(devices),
         )
 
     @classmethod
     def largest_board(
-        cls, params: Mapping[str, float], limits: StaveLimits, length_mm: float | None = None
+        cls,
+        params: Mapping[str, float],
+        limits: StaveLimits,
+        length_mm: float | None = None,
+        devices: Sequence[TableOutline] = (),
     ) -> TableKeepOut:
         """Nothing measured: the widest board the table takes (of the recipe's length, or
         the longest the table takes)."""
         length = limits.max_length_mm if length_mm is None else length_mm
-        return cls.for_board(length, limits.max_width_mm, params, limits)
+        return cls.for_board(length, limits.max_width_mm, params, limits, devices)
 
     @classmethod
-    def around_toolpath(cls, toolpath: ToolPath) -> TableKeepOut:
+    def devices_only(
+        cls, devices: Sequence[TableOutline], params: Mapping[str, float], limits: StaveLimits
+    ) -> TableKeepOut:
+        """An empty table with devices in the way (the centering device out)."""
+        keep_out = cls.for_board(0.0, 0.0, params, limits, devices)
+        return replace(keep_out, board_on_table=False)
+
+    @classmethod
+    def around_toolpath(
+        cls, toolpath: ToolPath, devices: Sequence[TableOutline] = ()
+    ) -> TableKeepOut:
         """The board a tool path was made for."""
         p = toolpath.params
         return cls(
@@ -104,10 +123,11 @@ class TableKeepOut:
             tool_radius_mm=p.tool_radius_mm,
             machine_height_mm=p.machine_height_mm,
             clearance_mm=p.tilt_clearance_mm,
+            devices=tuple(devices),
         )
 
     def box(self, tilt_deg: float) -> KeepOutBox:
-        """The open box (machine coordinates) the pivot stays out of at tilts up to
+        """The board's open box (machine coordinates) the pivot stays out of at tilts up to
         ``|tilt_deg|``."""
         return board_keep_out_box(
             self.length_mm,
@@ -117,33 +137,72 @@ class TableKeepOut:
             tilt_deg,
         ).moved(self.origin_x_mm, self.origin_y_mm)
 
+    def boxes(self, tilt_deg: float) -> list[tuple[str, KeepOutBox]]:
+        """Every obstacle's box at tilts up to ``|tilt_deg|``, named for the messages: the
+        board's (if one is on the table) and each device's, grown by the same reach."""
+        named = [("the board", self.box(tilt_deg))] if self.board_on_table else []
+        for device in self.devices:
+            grown = board_keep_out_box(
+                device.x_max_mm - device.x_min_mm,
+                device.y_max_mm - device.y_min_mm,
+                self.tool_radius_mm,
+                self.machine_height_mm,
+                tilt_deg,
+            ).moved(device.x_min_mm, (device.y_min_mm + device.y_max_mm) / 2.0)
+            named.append((device.name, grown))
+        return named
+
+    def extent(self, tilt_deg: float) -> KeepOutBox:
+        """The smallest box around every obstacle (where a move is clear of all of them)."""
+        boxes = [box for _, box in self.boxes(tilt_deg)] or [self.box(tilt_deg)]
+        return KeepOutBox(
+            min(b.x_min for b in boxes),
+            max(b.x_max for b in boxes),
+            min(b.y_min for b in boxes),
+            max(b.y_max for b in boxes),
+        )
+
     def inside(self, xyz: Sequence[float]) -> bool:
-        """True if the cutter at pivot (x, y) and tilt z may touch the board."""
-        return self.box(xyz[2]).contains((xyz[0], xyz[1]))
+        """True if the cutter at pivot (x, y) and tilt z may touch the board or a device."""
+        return self._holding(xyz[2], (xyz[0], xyz[1])) is not None
+
+    def _holding(self, tilt_deg: float, point: Point) -> tuple[str, KeepOutBox] | None:
+        return next(((n, b) for n, b in self.boxes(tilt_deg) if b.contains(point)), None)
 
     def route(self, start: Sequence[float], end: Sequence[float]) -> list[XYZ]:
-        """Waypoints from ``start`` to ``end`` (x, y, z) that keep the pivot out of the box;
-        the tilt changes linearly with the distance travelled. Raises KeepOutRefused."""
+        """Waypoints from ``start`` to ``end`` (x, y, z) that keep the pivot out of every
+        box; the tilt changes linearly with the distance travelled. Raises KeepOutRefused."""
         a = (float(start[0]), float(start[1]), float(start[2]))
         b = (float(end[0]), float(end[1]), float(end[2]))
-        box = self.box(max(abs(a[2]), abs(b[2])))
+        tilt = max(abs(a[2]), abs(b[2]))
         for name, point in (("start", a), ("target", b)):
-            if box.contains(point[:2]):
+            if (held := self._holding(tilt, point[:2])) is not None:
+                what, box = held
                 raise KeepOutRefused(
-                    f"the {name} X {point[0]:.1f} Y {point[1]:.1f} mm is over the board "
+                    f"the {name} X {point[0]:.1f} Y {point[1]:.1f} mm is over {what} "
                     f"(keep-out X {box.x_min:.1f}..{box.x_max:.1f}, "
                     f"Y {box.y_min:.1f}..{box.y_max:.1f} mm)"
                 )
-        if not box.blocks(a[:2], b[:2]):
+        boxes = [box for _, box in self.boxes(tilt)]
+        if not _blocked(boxes, a[:2], b[:2]):
             return [a, b]
-        corners = [c for c in self._corners(box) if self._within_travel(c)]
-        xy_path = _shortest_clear_path(a[:2], b[:2], corners, box)
+        corners = [
+            c
+            for box in boxes
+            for c in self._corners(box)
+            if self._within_travel(c) and not any(o.contains(c) for o in boxes)
+        ]
+        xy_path = _shortest_clear_path(a[:2], b[:2], corners, boxes)
         if xy_path is None:
             raise KeepOutRefused(
                 f"no way from X {a[0]:.1f} Y {a[1]:.1f} to X {b[0]:.1f} Y {b[1]:.1f} mm "
-                "around the board within the axis travel"
+                f"around {self._obstacle_names(tilt)} within the axis travel"
             )
         return _with_tilt(xy_path, a[2], b[2])
+
+    def _obstacle_names(self, tilt_deg: float) -> str:
+        names = list(dict.fromkeys(name for name, _ in self.boxes(tilt_deg)))
+        return " and ".join(names) if names else "the board"
 
     def _corners(self, box: KeepOutBox) -> list[Point]:
         m = self.clearance_mm
@@ -164,10 +223,14 @@ class TableKeepOut:
         """Index of the first leg of a polyline (x, y, z points) that enters the box sized
         for its tilts, or None if every leg stays clear."""
         for index, (a, b) in enumerate(pairwise(points)):
-            box = self.box(max(abs(a[2]), abs(b[2])))
-            if box.blocks((a[0], a[1]), (b[0], b[1])):
+            boxes = [box for _, box in self.boxes(max(abs(a[2]), abs(b[2])))]
+            if _blocked(boxes, (a[0], a[1]), (b[0], b[1])):
                 return index
         return None
+
+
+def _blocked(boxes: Sequence[KeepOutBox], start: Point, end: Point) -> bool:
+    return any(box.blocks(start, end) for box in boxes)
 
 
 def _travel(low: float | None, high: float | None) -> tuple[float, float]:
@@ -175,7 +238,7 @@ def _travel(low: float | None, high: float | None) -> tuple[float, float]:
 
 
 def _shortest_clear_path(
-    start: Point, end: Point, corners: Sequence[Point], box: KeepOutBox
+    start: Point, end: Point, corners: Sequence[Point], boxes: Sequence[KeepOutBox]
 ) -> list[Point] | None:
     nodes = [start, end, *corners]
     best = {0: 0.0}
@@ -191,7 +254,7 @@ def _shortest_clear_path(
         if dist > best.get(index, math.inf):
             continue
         for other in range(len(nodes)):
-            if other == index or box.blocks(nodes[index], nodes[other]):
+            if other == index or _blocked(boxes, nodes[index], nodes[other]):
                 continue
             candidate = dist + math.dist(nodes[index], nodes[other])
             if candidate < best.get(other, math.inf):
