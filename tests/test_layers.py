@@ -34,8 +34,9 @@ VERSION = "app.__version__"
 ALLOWED: dict[str, tuple[str, ...]] = {
     "__init__": (),
     "__main__": ("app.main",),
-    "config": ("app.resources", "app.plant.settings", "app.pendant_settings"),
+    "config": ("app.resources", "app.plant.settings", "app.pendant_settings", "app.table_outlines"),
     "pendant_settings": (),
+    "table_outlines": (),
     "resources": (),
     "logging_setup": ("platformdirs",),
     "geometry": (),
@@ -46,6 +47,7 @@ ALLOWED: dict[str, tuple[str, ...]] = {
         VERSION,
         "app.config",
         "app.pendant_settings",
+        "app.table_outlines",
         "app.data",
         "app.drivers",
         "app.geometry",
