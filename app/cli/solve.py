@@ -1,14 +1,21 @@
 """`stave solve`: the profile and tool path of one board, from the command line.
 
     stave solve --length MM --width MM [--length-ratio N/D] --width-ratio N/D
-                [--thickness MM] [--tilt DEG] [--tool-radius MM] [--machine-height MM]
+                [--thickness MM] [--tilt DEG [--tilt-b DEG]
+                 | --barrel-diameter-mm D | --barrel-axes-mm AxB [--barrel-start-deg T]]
+                [--tool-radius MM] [--machine-height MM]
                 [--profile KIND] [--exponent N] [--semi-axis-ratio S]
                 [--dxf FILE [--dxf-layer NAME]] [--config FILE] [--json]
 
 Human-readable by default; `--json` prints one JSON object (keys A, B, C, D, R, W1, points,
 arc_center_a, arc_center_b, toolpath; for the other profile kinds "profile_kind", W1, "edge"
 (side A's fitted lines and arcs) and toolpath). --length-ratio is needed by line-arc-line
-only; the profile options are those of `app.cli.profile_args`. Invalid input exits with
+only; the profile options are those of `app.cli.profile_args`. The bevels: `--tilt` for
+side A (and side B unless `--tilt-b` gives its own), or from a barrel: round
+(`--barrel-diameter-mm`, both sides asin(W/D)) or oval (`--barrel-axes-mm` a x b, the
+semi-axes, with `--barrel-start-deg` the ellipse parameter t of the stave's first joint,
+docs/MACHINE.md section 7); both tilts are printed ("tilt_a_deg", "tilt_b_deg" in the
+JSON). Invalid input exits with
 code 2 and one line on stderr naming the field(s) and the allowed range(s); never a traceback.
 
 `app.cli` wires `stave solve` to `add_arguments` and `run`; `main(argv)` runs it standalone
@@ -42,10 +49,12 @@ from app.cli.console import (
 )
 from app.cli.profile_args import ProfileOptionError, add_profile_arguments, profile_from_args
 from app.data.recipe_profile import LINE_ARC_LINE
-from app.geometry.bevel import FixedTilt
+from app.geometry.barrel import RoundBarrelTilt
+from app.geometry.barrel_section import BarrelSection, PlacedBarrelTilt, validate_section
+from app.geometry.bevel import FixedSideTilts, FixedTilt, SideTilts, TiltRule
 from app.geometry.biarc import FIT_TOLERANCE_MM
 from app.geometry.curved_profile import CurvedProfile, SideProfile
-from app.geometry.errors import GeometryError
+from app.geometry.errors import GeometryError, out_of_range
 from app.geometry.limits import StaveLimits, validate_stave
 from app.geometry.ratio import Ratio
 from app.geometry.stave_cut import StaveSpec, cut_stave
@@ -182,7 +191,21 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--thickness", metavar="MM", help="stave thickness H (checked only)")
     parser.add_argument(
-        "--tilt", metavar="DEG", help=f"bevel alpha (default {format(DEFAULT_TILT_DEG, 'g')})"
+        "--tilt",
+        metavar="DEG",
+        help=f"bevel alpha of side A, and of B (default {format(DEFAULT_TILT_DEG, 'g')})",
+    )
+    parser.add_argument("--tilt-b", metavar="DEG", help="side B's own bevel (with --tilt)")
+    parser.add_argument(
+        "--barrel-diameter-mm", metavar="D", help="bevels from a round barrel: asin(W / D)"
+    )
+    parser.add_argument(
+        "--barrel-axes-mm", metavar="AxB", help="bevels from an oval barrel: semi-axes a x b"
+    )
+    parser.add_argument(
+        "--barrel-start-deg",
+        metavar="T",
+        help="oval: the ellipse parameter t of the stave's first joint (default 0)",
     )
     parser.add_argument(
         "--tool-radius",
@@ -242,12 +265,52 @@ def _solve(args: argparse.Namespace) -> tuple[SideProfile, ToolPath, tuple[str, 
         thickness,
         length_ratio.value,
         width_ratio.value,
-        FixedTilt(tilt),
+        _tilt_rule(args, tilt),
         profile_choice.spec,
     )
     cut = cut_stave(stave, width, process, settings.limits)
     profile, toolpath = cut.profile, cut.toolpath
     return profile, toolpath, (str(length_ratio), str(width_ratio))
+
+
+def _tilt_rule(args: argparse.Namespace, tilt_deg: float) -> TiltRule:
+    """The bevels the options ask for (GeometryError/CliInputError naming the option)."""
+    barrel = args.barrel_diameter_mm is not None or args.barrel_axes_mm is not None
+    if barrel and (args.tilt is not None or args.tilt_b is not None):
+        raise CliInputError(
+            "--tilt/--tilt-b and --barrel-...: give the bevels or the barrel, not both"
+        )
+    if args.barrel_start_deg is not None and args.barrel_axes_mm is None:
+        raise CliInputError("--barrel-start-deg is for an oval barrel: give --barrel-axes-mm")
+    if args.tilt_b is not None:
+        tilt_b = _number_or_text(args.tilt_b)
+        if not isinstance(tilt_b, float) or not 0.0 <= tilt_b < 90.0:
+            raise GeometryError([out_of_range("tilt_b_deg", tilt_b, "0 <= tilt < 90 deg")])
+        return FixedSideTilts(SideTilts(tilt_deg, tilt_b))
+    if not barrel:
+        return FixedTilt(tilt_deg)
+    axes = None if args.barrel_axes_mm is None else args.barrel_axes_mm.lower().split("x")
+    if axes is None:
+        diameter = _number_or_text(args.barrel_diameter_mm)
+        errors = validate_section(diameter_mm=diameter)
+        if errors:
+            raise GeometryError(errors)
+        assert isinstance(diameter, float)
+        return RoundBarrelTilt(diameter)
+    if len(axes) != 2:
+        raise CliInputError(
+            f"barrel_axes_mm = {args.barrel_axes_mm!r} is not AxB: allowed two semi-axes in mm "
+            "joined by x, a >= b, e.g. 350x250"
+        )
+    a, b = _number_or_text(axes[0]), _number_or_text(axes[1])
+    errors = validate_section(a_mm=a, b_mm=b)
+    start = 0.0 if args.barrel_start_deg is None else _number_or_text(args.barrel_start_deg)
+    if not isinstance(start, float) or not 0.0 <= start < 360.0:
+        errors.append(out_of_range("barrel_start_deg", start, "0 <= t < 360 deg"))
+    if errors:
+        raise GeometryError(errors)
+    assert isinstance(a, float) and isinstance(b, float) and isinstance(start, float)
+    return PlacedBarrelTilt(BarrelSection(a, b), math.radians(start))
 
 
 def _pair(point: tuple[float, float]) -> list[float]:
@@ -271,11 +334,16 @@ def _edge_json(profile: CurvedProfile) -> list[dict[str, object]]:
 
 def to_json_object(profile: SideProfile, toolpath: ToolPath) -> dict[str, object]:
     """The `--json` object."""
+    tilts = {
+        "tilt_a_deg": toolpath.params.side_tilt_deg("A"),
+        "tilt_b_deg": toolpath.params.side_tilt_deg("B"),
+    }
     if isinstance(profile, CurvedProfile):
         return {
             "profile_kind": profile.kind.value,
             "W1": profile.W1,
             "edge": _edge_json(profile),
+            **tilts,
             "toolpath": toolpath.to_json_list(),
         }
     return {
@@ -288,6 +356,7 @@ def to_json_object(profile: SideProfile, toolpath: ToolPath) -> dict[str, object
         "points": {name: _pair(point) for name, point in profile.points.items()},
         "arc_center_a": _pair(profile.arc_center_a),
         "arc_center_b": _pair(profile.arc_center_b),
+        **tilts,
         "toolpath": toolpath.to_json_list(),
     }
 
@@ -333,7 +402,8 @@ def _toolpath_lines(toolpath: ToolPath) -> list[str]:
     lines: list[str] = []
     lines.append(
         f"tool path (machine X, Y mm; tilt deg): r = {p.tool_radius_mm:g} mm, "
-        f"Hm = {p.machine_height_mm:g} mm, tilt = {p.tilt_deg:g} deg, "
+        f"Hm = {p.machine_height_mm:g} mm, tilt A = {p.side_tilt_deg('A'):.4f} deg, "
+        f"tilt B = {p.side_tilt_deg('B'):.4f} deg, "
         f"P0 = ({p.start_x_mm:g}, {p.start_y_mm:g})"
     )
     lines.append("   #  move  side      start X    start Y        end X      end Y    tilt")

@@ -41,6 +41,17 @@ class TiltRule(Protocol):
 
 
 @dataclass(frozen=True)
+class FixedSideTilts:
+    """Every board bevelled at the two given tilts, side A and side B (a stave planned with
+    both bevels known, as ``stave solve --tilt A --tilt-b B`` does)."""
+
+    tilts: SideTilts
+
+    def tilts_for_width(self, width_mm: float, limits: StaveLimits) -> SideTilts:
+        return self.tilts
+
+
+@dataclass(frozen=True)
 class FixedTilt:
     """Every board bevelled at ``tilt_deg`` on both sides, whatever its width (the tilt itself
     is checked against the limits with the stave, by `validate_stave`)."""

@@ -55,6 +55,13 @@ def plan_barrel_board(
         raise PlanningError(
             AlarmCode.WIDTH_NOT_ALLOWED, f"width {width_mm:.2f} mm: {message}", exc.errors
         ) from exc
+    if placed.placement is Placement.TOO_NARROW and choice is BoardChoice.CLOSE_NOW:
+        raise PlanningError(
+            TOO_NARROW_ALARM,
+            f"stave {placed.number}: the closing stave was chosen and the {width_mm:.1f} mm "
+            f"board is narrower than the gap of {barrel.gap_mm:.1f} mm: put in a board of at "
+            f"least {barrel.gap_mm:.1f} mm, or choose one more normal stave",
+        )
     if placed.placement is Placement.TOO_NARROW:
         left = barrel.section.chord_mm(placed.stave.end_t_rad, FULL_TURN_RAD)
         raise PlanningError(

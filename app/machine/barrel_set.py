@@ -5,6 +5,8 @@ and the last stave must be cut to exactly the width that closes the barrel. So e
 is placed after the staves cut before it (``app.geometry.barrel_section``): an ordinary
 stave at its own width and the bevels of its place, or - once the gap left is no wider than
 the board - the closing stave, cut to the gap's width with the bevels of the closing joints.
+Once a single stave can close the gap, the operator may say so for the next board: cut the
+closing stave now (a board narrower than the gap is then refused), or one more normal stave.
 
 A board narrower than the gap that would leave a gap too narrow for any stave cannot be
 placed without spoiling the barrel: the machine says so before cutting, and the operator
@@ -44,10 +46,12 @@ class Placement(Enum):
 
 
 class BoardChoice(Enum):
-    """The operator's answer when a board is too narrow to close the barrel."""
+    """The operator's answer for the next board, once one stave can close the gap left (or
+    when a board is too narrow to close the barrel)."""
 
     WIDER_BOARD = "wider_board"  # take it off; the next board is placed instead
     CUT_ORDINARY = "cut_ordinary"  # cut it as an ordinary stave; close with the next
+    CLOSE_NOW = "close_now"  # the next board is the closing stave (a narrower one: E034)
 
 
 @dataclass(frozen=True)
@@ -124,6 +128,8 @@ class BarrelSet:
         closing = closing_stave(self.section, number, start) if self.staves else None
         if closing is not None and board_width_mm >= closing.width_mm:
             return self._next(number, Placement.CLOSING, board_width_mm, closing)
+        if closing is not None and choice is BoardChoice.CLOSE_NOW:
+            return self._next(number, Placement.TOO_NARROW, board_width_mm, closing)
         end = next_joint_t(self.section, start, board_width_mm)
         stave = chord_stave(self.section, number, start, min(end, FULL_TURN_RAD))
         if closing is not None and choice is not BoardChoice.CUT_ORDINARY:
@@ -136,6 +142,14 @@ class BarrelSet:
         self, number: int, placement: Placement, board_mm: float, stave: PlacedStave
     ) -> NextStave:
         return NextStave(number, placement, board_mm, stave, self.section, self.number)
+
+    def closing_width_mm(self) -> float | None:
+        """The width of the stave that would close the gap now (None: no single stave can,
+        or nothing is placed yet); what the operator is asked about before the next board."""
+        if not self.staves or self.closed:
+            return None
+        closing = closing_stave(self.section, len(self.staves) + 1, self.end_t_rad)
+        return None if closing is None else closing.width_mm
 
     def with_stave(self, next_stave: NextStave) -> BarrelSet:
         """This barrel with the stave just cut added."""

@@ -13,6 +13,7 @@ import enum
 from dataclasses import dataclass, field
 
 from app.drivers.contracts import InputImage, OutputImage
+from app.machine.barrel_view import BarrelView
 from app.machine.refusals import Refusal
 from app.machine.states import CycleStep, MachineState, Mode
 
@@ -65,18 +66,6 @@ class AlarmView:
     arguments: tuple[AlarmArgument, ...] = ()
     detail: Refusal | None = None  # what was found, for the screens to translate
     technical: str = ""  # a device's own words (English), for the alarm's details
-
-
-@dataclass(frozen=True)
-class BarrelView:
-    """The barrel being raised: how many staves are done, how many more the mean width so
-    far needs (None before the first), and the gap still open (None before the first)."""
-
-    number: int
-    staves_done: int
-    staves_left: int | None
-    gap_mm: float | None
-    closed: bool
 
 
 @dataclass(frozen=True)

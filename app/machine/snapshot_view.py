@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from typing import Protocol
 
@@ -12,14 +11,15 @@ from app.data.recipe import Recipe
 from app.drivers.contracts import InputImage, MachineBackend, OutputImage
 from app.machine.alarms import AlarmManager
 from app.machine.axes import AxisGroup
-from app.machine.barrel_set import BarrelSet
+from app.machine.barrel_set import BarrelSet, BoardChoice
+from app.machine.barrel_view import barrel_view
 from app.machine.cycle import AutomaticCycle
 from app.machine.homing import HomingSequence
 from app.machine.manual import ManualControl
 from app.machine.pendant.jog_sources import PendantJog
 from app.machine.permissions import Facts, allowed_commands
 from app.machine.refusals import Refusal
-from app.machine.snapshot import AxisView, BarrelView, CycleView, IoPoint, MachineSnapshot
+from app.machine.snapshot import AxisView, CycleView, IoPoint, MachineSnapshot
 from app.machine.states import LATCHED_STATES, CycleStep, MachineState, Mode
 
 
@@ -47,6 +47,7 @@ class MachineController(Protocol):
     pendant_jog: PendantJog
     barrel: BarrelSet | None
     message_serial: int
+    board_choice: BoardChoice | None
 
     @property
     def pieces_shift(self) -> int: ...
@@ -145,19 +146,8 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         message=c.message,
         io_points=c.io_points,
         message_serial=c.message_serial,
-        barrel=barrel_view(c.barrel),
+        barrel=None
+        if c.barrel is None
+        else barrel_view(c.barrel, planned.barrel_stave if planned else None, c.board_choice),
         last_step_times_s=tuple(c.last_step_times_s.items()),
-    )
-
-
-def barrel_view(barrel: BarrelSet | None) -> BarrelView | None:
-    if barrel is None:
-        return None
-    gap_mm = barrel.gap_mm
-    return BarrelView(
-        number=barrel.number,
-        staves_done=len(barrel.staves),
-        staves_left=barrel.staves_left_estimate(),
-        gap_mm=gap_mm if math.isfinite(gap_mm) else None,
-        closed=barrel.closed,
     )

@@ -28,8 +28,9 @@ from app.data.exchange import production_to_csv, read_recipes
 from app.data.production_counts import run_counts
 from app.data.recipe_files import RecipeFileError
 from app.data.shifts import ShiftPlan, current_shift
+from app.machine.barrel_view import BarrelView
 from app.machine.commands import SelectRecipe
-from app.machine.snapshot import AlarmState, BarrelView, MachineSnapshot
+from app.machine.snapshot import AlarmState, MachineSnapshot
 from app.plant.access import CALLER, PlantRuleset, PlantUserManager, monotonic_clock
 from app.plant.alarm_events import AlarmChange, alarm_changes
 from app.plant.alarm_texts import alarm_titles

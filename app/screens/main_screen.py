@@ -23,7 +23,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.data.recipe import Recipe
+from app.data.recipe import Recipe, TiltMode
 from app.machine.commands import (
     Abandon,
     Home,
@@ -37,6 +37,7 @@ from app.machine.commands import (
 )
 from app.machine.snapshot import MachineSnapshot
 from app.machine.states import MachineState
+from app.screens.barrel_panel import BarrelPanel
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_duration, format_optional
 from app.screens.texts import step_text
@@ -195,7 +196,12 @@ class MainScreen(Screen):
         right.addWidget(self.io_strip)
         right.addLayout(counters)
         right.addWidget(cycle_panel)
-        right.addWidget(self.plan_view, 1)
+        self.barrel_panel = BarrelPanel(context)
+        views = QHBoxLayout()
+        views.setSpacing(8)
+        views.addWidget(self.plan_view, 1)
+        views.addWidget(self.barrel_panel, 1)
+        right.addLayout(views, 1)
 
         layout = QHBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
@@ -241,6 +247,7 @@ class MainScreen(Screen):
         for readout in (self.axis_x, self.axis_y, self.axis_z):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
         self._show_recipe_number()
+        self.barrel_panel.retranslate()
 
     # -- recipes -------------------------------------------------------------------------------
 
@@ -395,6 +402,14 @@ class MainScreen(Screen):
 
         self.io_strip.show_inputs(snapshot.inputs, force)
         self._update_plan(snapshot)
+        self._update_barrel(snapshot)
+
+    def _update_barrel(self, snapshot: MachineSnapshot) -> None:
+        """The barrel panel, while the selected recipe makes barrels or one is raised."""
+        index = self._current_index()
+        barrels = index is not None and self.recipes[index].tilt_mode is TiltMode.BARREL
+        self.barrel_panel.setVisible(barrels or snapshot.barrel is not None)
+        self.barrel_panel.show_barrel(snapshot.barrel, snapshot)
 
     def apply_scale(self, scale: float) -> None:
         self.left_widget.setFixedWidth(round(LEFT_WIDTH_PX * scale))

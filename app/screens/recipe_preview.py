@@ -27,7 +27,8 @@ class RecipePreview:
     outline: tuple[Point, ...] = ()
     toolpath: tuple[Point, ...] = ()
     cutting: tuple[bool, ...] = ()
-    tilt_deg: float | None = None
+    tilt_deg: float | None = None  # side A's bevel
+    tilt_b_deg: float | None = None  # side B's (an oval barrel's differ)
     head_width_mm: float | None = None
     d_mm: float | None = None
     r_mm: float | None = None
@@ -46,9 +47,12 @@ def preview_recipe(
     try:
         cut = cut_stave(recipe.stave, width_mm, params, limits)
     except StaveCutRefused as exc:
-        tilt_deg = None if exc.tilts is None else exc.tilts.a_deg
+        tilts = exc.tilts
         return RecipePreview(
-            width_mm, tilt_deg=tilt_deg, errors=tuple(e.message for e in exc.errors)
+            width_mm,
+            tilt_deg=None if tilts is None else tilts.a_deg,
+            tilt_b_deg=None if tilts is None else tilts.b_deg,
+            errors=tuple(e.message for e in exc.errors),
         )
     drawing = stave_drawing(cut.toolpath)
     return RecipePreview(
@@ -57,6 +61,7 @@ def preview_recipe(
         toolpath=drawing.toolpath_xy,
         cutting=drawing.cutting_mask,
         tilt_deg=cut.tilts.a_deg,
+        tilt_b_deg=cut.tilts.b_deg,
         head_width_mm=cut.profile.W1,
         d_mm=cut.profile.D,
         r_mm=cut.profile.R,

@@ -74,8 +74,17 @@ NUMBER_FIELDS = (
     "thickness_mm",
     "tilt_deg",
     "barrel_diameter_mm",
+    "barrel_minor_diameter_mm",
     "barrel_perimeter_mm",
+    "target_width_mm",
 )
+OPTIONAL_NUMBERS = (
+    "barrel_diameter_mm",
+    "barrel_minor_diameter_mm",
+    "barrel_perimeter_mm",
+    "target_width_mm",
+)
+"""Number rows the keypad can also clear (an oval's short axis: empty for a round barrel)."""
 FIELDS = (
     "name",
     "length_mm",
@@ -89,7 +98,9 @@ FIELDS = (
     "tilt_mode",
     "tilt_deg",
     "barrel_diameter_mm",
+    "barrel_minor_diameter_mm",
     "barrel_perimeter_mm",
+    "target_width_mm",
     "note",
 )
 PROFILE_FIELDS = ("profile_kind", "exponent", "semi_axis_ratio", "drawing")
@@ -362,7 +373,9 @@ class RecipesScreen(Screen):
             "tilt_mode": self.tr("Tilt"),
             "tilt_deg": self.tr("Tilt α"),
             "barrel_diameter_mm": self.tr("Barrel diameter"),
+            "barrel_minor_diameter_mm": self.tr("Oval: short axis"),
             "barrel_perimeter_mm": self.tr("Barrel perimeter"),
+            "target_width_mm": self.tr("Belly width to cut"),
             "note": self.tr("Note"),
         }
         return titles[name]
@@ -377,7 +390,9 @@ class RecipesScreen(Screen):
             "thickness_mm": (limits.min_thickness_mm, limits.max_thickness_mm, "mm"),
             "tilt_deg": (limits.min_tilt_deg, limits.max_tilt_deg, "°"),
             "barrel_diameter_mm": (d_low, d_high, "mm"),
+            "barrel_minor_diameter_mm": (d_low, d_high, "mm"),
             "barrel_perimeter_mm": (round(math.pi * d_low, 1), round(math.pi * d_high, 1), "mm"),
+            "target_width_mm": (limits.min_head_width_mm, limits.max_width_mm, "mm"),
         }
         return ranges[name]
 
@@ -385,7 +400,7 @@ class RecipesScreen(Screen):
         if name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             text = f"{format_number(low)} … {format_number(high)} {unit}"
-            if name in ("barrel_diameter_mm", "barrel_perimeter_mm"):
+            if name in OPTIONAL_NUMBERS:
                 text += " " + self.tr("(optional)")
             return text
         if name == "length_ratio":
@@ -622,7 +637,7 @@ class RecipesScreen(Screen):
             self.context.open(keypad_family)
         elif name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
-            optional = name in ("barrel_diameter_mm", "barrel_perimeter_mm")
+            optional = name in OPTIONAL_NUMBERS
             keypad_number = NumberKeypad(
                 title,
                 getattr(draft, name),
@@ -741,7 +756,9 @@ class RecipesScreen(Screen):
             "drawing": draft.profile.file_name or self.tr("Import a DXF file…"),
             "tilt_deg": f"{format_number(draft.tilt_deg)} °",
             "barrel_diameter_mm": format_optional(draft.barrel_diameter_mm, 1, "mm"),
+            "barrel_minor_diameter_mm": format_optional(draft.barrel_minor_diameter_mm, 1, "mm"),
             "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
+            "target_width_mm": format_optional(draft.target_width_mm, 1, "mm"),
             "note": (draft.note[:60] + "…" if len(draft.note) > 60 else draft.note) or "—",
         }
         for name, text in values.items():
@@ -836,7 +853,10 @@ class RecipesScreen(Screen):
         set_text(self.result_labels["head"], format_optional(preview.head_width_mm, 1, "mm"))
         set_text(self.result_labels["d"], format_optional(preview.d_mm, 2, "mm"))
         set_text(self.result_labels["r"], format_optional(preview.r_mm, 0, "mm"))
-        set_text(self.result_labels["tilt"], format_optional(preview.tilt_deg, 2, "°"))
+        tilt_text = format_optional(preview.tilt_deg, 2, "°")
+        if preview.tilt_b_deg is not None and preview.tilt_b_deg != preview.tilt_deg:
+            tilt_text = f"A {tilt_text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
+        set_text(self.result_labels["tilt"], tilt_text)
         set_text(self.preview_errors, "\n".join(errors))
 
     def _width_range(self, recipe: Recipe) -> WidthRange | None:

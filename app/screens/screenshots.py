@@ -32,6 +32,7 @@ from app.machine.commands import (
     SelectRecipe,
     SetClamps,
     Start,
+    StartBarrel,
 )
 from app.machine.link import MachineLink
 from app.machine.snapshot import MachineSnapshot
@@ -170,6 +171,8 @@ def render_screenshots(
             driver.send_and_wait(
                 SelectRecipe(recipe.id), lambda s: s.recipe_id == recipe.id, "recipe selected"
             )
+            if recipe.barrel_section is not None:  # its boards are the staves of a barrel
+                driver.send_and_wait(StartBarrel(), lambda s: s.barrel is not None, "barrel")
             driver.send_and_wait(
                 Start(), lambda s: s.state is MachineState.AUTOMATIC, "cycle started"
             )

@@ -964,6 +964,90 @@
     </message>
 </context>
 <context>
+    <name>BarrelPanel</name>
+    <message>
+        <location filename="../../app/screens/barrel_panel.py" line="+91" />
+        <source>Closing stave now</source>
+        <translation>Closing stave now</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>One more stave</source>
+        <translation>One more stave</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+73" />
+        <source>Cooper's card</source>
+        <translation>Cooper's card</translation>
+    </message>
+    <message>
+        <location line="-44" />
+        <source>No barrel is being raised</source>
+        <translation>No barrel is being raised</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Start a barrel</source>
+        <translation>Start a barrel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>New barrel</source>
+        <translation>New barrel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Barrel %1</source>
+        <translation>Barrel %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Staves: %1</source>
+        <translation>Staves: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Closed</source>
+        <translation>Closed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The next board starts a new barrel.</source>
+        <translation>The next board starts a new barrel.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The next board is stave 1.</source>
+        <translation>The next board is stave 1.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Left: %1 of the perimeter (gap %2)</source>
+        <translation>Left: %1 of the perimeter (gap %2)</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>About %1 more staves at the mean width</source>
+        <translation>About %1 more staves at the mean width</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>One stave of %1 closes the barrel. The next board:</source>
+        <translation>One stave of %1 closes the barrel. The next board:</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Card not written: %1</source>
+        <translation>Card not written: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Cooper's card written to %1.</source>
+        <translation>Cooper's card written to %1.</translation>
+    </message>
+</context>
+<context>
     <name>ChoiceOverlay</name>
     <message>
         <location filename="../../app/screens/widgets/dialogs.py" line="+125" />
@@ -1924,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+211" />
+        <location filename="../../app/screens/main_screen.py" line="+217" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2035,7 +2119,7 @@ shift</translation>
         <translation>NOT HOMED</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+25" />
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>There are no recipes yet: create one on Recipes.</translation>
     </message>
@@ -2375,11 +2459,6 @@ shift</translation>
     </message>
     <message>
         <location line="+14" />
-        <source>Manual mode:</source>
-        <translation>Manual mode:</translation>
-    </message>
-    <message>
-        <location line="+2" />
         <source>Manual mode: hold a button to jog.</source>
         <translation>Manual mode: hold a button to jog.</translation>
     </message>
@@ -2399,13 +2478,13 @@ shift</translation>
         <translation>Close clamps</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+13" />
         <source>Spindle OFF</source>
         <translation>Spindle OFF</translation>
     </message>
     <message>
-        <location line="-61" />
-        <location line="+61" />
+        <location line="-64" />
+        <location line="+64" />
         <source>Spindle ON</source>
         <translation>Spindle ON</translation>
     </message>
@@ -2789,13 +2868,13 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+349" />
-        <location line="+73" />
+        <location filename="../../app/screens/recipes_screen.py" line="+360" />
+        <location line="+77" />
         <source>Recipes</source>
         <translation>Recipes</translation>
     </message>
     <message>
-        <location line="-69" />
+        <location line="-73" />
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -2841,12 +2920,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+78" />
+        <location line="+82" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-77" />
+        <location line="-81" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
@@ -2857,8 +2936,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Oval: short axis</source>
+        <translation>Oval: short axis</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Barrel perimeter</source>
         <translation>Barrel perimeter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Belly width to cut</source>
+        <translation>Belly width to cut</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2866,7 +2955,7 @@ shift</translation>
         <translation>Note</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+25" />
         <source>(optional)</source>
         <translation>(optional)</translation>
     </message>
@@ -2947,18 +3036,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+556" />
+        <location line="+561" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-555" />
-        <location line="+605" />
+        <location line="-560" />
+        <location line="+610" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-604" />
+        <location line="-609" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -2995,12 +3084,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+366" />
+        <location line="+368" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-365" />
+        <location line="-367" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -3062,12 +3151,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+193" />
+        <location line="+198" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-191" />
+        <location line="-196" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -3082,7 +3171,7 @@ shift</translation>
         <translation>Import a DXF file…</translation>
     </message>
     <message>
-        <location line="+84" />
+        <location line="+86" />
         <source>This recipe cuts no board on this machine</source>
         <translation>This recipe cuts no board on this machine</translation>
     </message>
@@ -3097,7 +3186,7 @@ shift</translation>
         <translation>Outside the widths this recipe cuts on this machine</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+27" />
         <source>Not saved</source>
         <translation>Not saved</translation>
     </message>

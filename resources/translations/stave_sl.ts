@@ -964,6 +964,90 @@
     </message>
 </context>
 <context>
+    <name>BarrelPanel</name>
+    <message>
+        <location filename="../../app/screens/barrel_panel.py" line="+91"/>
+        <source>Closing stave now</source>
+        <translation>Zapri sod zdaj</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One more stave</source>
+        <translation>Še ena doga</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+73"/>
+        <source>Cooper&apos;s card</source>
+        <translation>Sodarjeva kartica</translation>
+    </message>
+    <message>
+        <location line="-44"/>
+        <source>No barrel is being raised</source>
+        <translation>Noben sod ni v delu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start a barrel</source>
+        <translation>Začni sod</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>New barrel</source>
+        <translation>Nov sod</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Barrel %1</source>
+        <translation>Sod %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Staves: %1</source>
+        <translation>Dog: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Closed</source>
+        <translation>Zaprt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The next board starts a new barrel.</source>
+        <translation>Naslednja deska začne nov sod.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The next board is stave 1.</source>
+        <translation>Naslednja deska je doga 1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Left: %1 of the perimeter (gap %2)</source>
+        <translation>Ostane: %1 oboda (reža %2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>About %1 more staves at the mean width</source>
+        <translation>Še približno %1 dog povprečne širine</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>One stave of %1 closes the barrel. The next board:</source>
+        <translation>Doga širine %1 zapre sod. Naslednja deska:</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Card not written: %1</source>
+        <translation>Kartica ni zapisana: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cooper&apos;s card written to %1.</source>
+        <translation>Sodarjeva kartica zapisana v %1.</translation>
+    </message>
+</context>
+<context>
     <name>ChoiceOverlay</name>
     <message>
         <location filename="../../app/screens/widgets/dialogs.py" line="+125"/>
@@ -1924,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+211"/>
+        <location filename="../../app/screens/main_screen.py" line="+217"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2035,7 +2119,7 @@ izmena</translation>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
@@ -2375,11 +2459,6 @@ izmena</translation>
     </message>
     <message>
         <location line="+14"/>
-        <source>Manual mode:</source>
-        <translation>Ročni način:</translation>
-    </message>
-    <message>
-        <location line="+2"/>
         <source>Manual mode: hold a button to jog.</source>
         <translation>Ročni način: za premik držite gumb.</translation>
     </message>
@@ -2399,13 +2478,13 @@ izmena</translation>
         <translation>Zapri vpenjala</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Spindle OFF</source>
         <translation>Vreteno IZKLOP</translation>
     </message>
     <message>
-        <location line="-61"/>
-        <location line="+61"/>
+        <location line="-64"/>
+        <location line="+64"/>
         <source>Spindle ON</source>
         <translation>Vreteno VKLOP</translation>
     </message>
@@ -2789,13 +2868,13 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+349"/>
-        <location line="+73"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+360"/>
+        <location line="+77"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-73"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
@@ -2841,12 +2920,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+78"/>
+        <location line="+82"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-81"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
@@ -2857,8 +2936,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Oval: short axis</source>
+        <translation>Oval: kratka os</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Barrel perimeter</source>
         <translation>Obseg soda</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Belly width to cut</source>
+        <translation>Širina na trebuhu</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2866,7 +2955,7 @@ izmena</translation>
         <translation>Opomba</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>(optional)</source>
         <translation>(neobvezno)</translation>
     </message>
@@ -2947,18 +3036,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+556"/>
+        <location line="+561"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-555"/>
-        <location line="+605"/>
+        <location line="-560"/>
+        <location line="+610"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-604"/>
+        <location line="-609"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -2995,12 +3084,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+366"/>
+        <location line="+368"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-365"/>
+        <location line="-367"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -3062,12 +3151,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+193"/>
+        <location line="+198"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-196"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -3082,7 +3171,7 @@ izmena</translation>
         <translation>Uvozi datoteko DXF…</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+86"/>
         <source>This recipe cuts no board on this machine</source>
         <translation>Ta recept na tem stroju ne reže nobene deske</translation>
     </message>
@@ -3097,7 +3186,7 @@ izmena</translation>
         <translation>Zunaj širin, ki jih ta recept reže na tem stroju</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>

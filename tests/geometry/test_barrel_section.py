@@ -192,3 +192,13 @@ def test_chord_stave_of_a_circle_is_symmetric():
     stave = chord_stave(BarrelSection.circle(1000.0), 1, 0.3, 0.5)
     assert stave.bevel_start_deg == pytest.approx(stave.bevel_end_deg, abs=1e-12)
     assert stave.bevel_start_deg == pytest.approx(math.degrees(0.1), abs=1e-12)
+
+
+def test_the_length_along_the_section() -> None:
+    oval = BarrelSection(350.0, 250.0)
+    assert oval.arc_length_mm(0.0, FULL_TURN_RAD) == pytest.approx(1898.07, abs=5e-3)
+    assert oval.arc_length_mm(0.0, FULL_TURN_RAD) == pytest.approx(oval.perimeter_mm, rel=1e-9)
+    quarter = oval.arc_length_mm(0.0, math.pi / 2)
+    assert 2 * quarter == pytest.approx(oval.arc_length_mm(math.pi / 2, 3 * math.pi / 2))
+    assert BarrelSection.circle(600.0).arc_length_mm(1.0, 2.5) == pytest.approx(450.0)
+    assert oval.arc_length_mm(2.0, 1.0) == 0.0

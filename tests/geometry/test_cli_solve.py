@@ -36,7 +36,8 @@ def solve_json(capsys, *extra: str) -> dict:
 def test_json_has_the_documented_keys_and_values(capsys):
     data = solve_json(capsys)
     assert list(data) == [
-        "A", "B", "C", "D", "R", "W1", "points", "arc_center_a", "arc_center_b", "toolpath",
+        "A", "B", "C", "D", "R", "W1", "points", "arc_center_a", "arc_center_b",
+        "tilt_a_deg", "tilt_b_deg", "toolpath",
     ]  # fmt: skip
     assert (data["A"], data["B"], data["C"], data["W1"]) == (250.0, 250.0, 18.75, 112.5)
     assert round(data["D"], 6) == 12.502603

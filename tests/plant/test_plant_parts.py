@@ -19,8 +19,8 @@ from app.data.plant_users import (
 )
 from app.geometry.barrel_section import BarrelSection
 from app.machine.barrel_set import BarrelSet
+from app.machine.barrel_view import barrel_view
 from app.machine.snapshot import AlarmState, AlarmView
-from app.machine.snapshot_view import barrel_view
 from app.plant.alarm_events import alarm_changes
 from app.plant.alarm_texts import alarm_titles
 from app.plant.login_throttle import LoginThrottle
@@ -145,9 +145,8 @@ def test_state_times_count_by_condition_and_continue_after_a_restart(tmp_path: P
 
 
 def test_barrel_view_for_the_plant() -> None:
-    assert barrel_view(None) is None
     barrel = BarrelSet(BarrelSection.circle(600.0), 80.0)
-    empty = barrel_view(barrel)
+    empty = barrel_view(barrel, None, None)
     assert empty is not None and (empty.staves_done, empty.staves_left, empty.gap_mm) == (
         0,
         None,
@@ -155,6 +154,6 @@ def test_barrel_view_for_the_plant() -> None:
     )
     for _ in range(3):
         barrel = barrel.with_stave(barrel.place(100.0))
-    view = barrel_view(barrel)
+    view = barrel_view(barrel, None, None)
     assert view is not None and view.staves_done == 3 and not view.closed
     assert view.staves_left == barrel.staves_left_estimate() and view.gap_mm == barrel.gap_mm

@@ -1,0 +1,44 @@
+"""Recipes screen: an oval barrel's short axis and a belly width to cut, entered on the
+keypads and checked by the recipe's own rules; the preview shows both sides' tilts."""
+
+from __future__ import annotations
+
+from app.data.recipe import BarrelType
+from app.screens.widgets.keypad import NumberKeypad
+from tests.screens.helpers import find_button
+from tests.screens.test_recipes_screen import keys, open_recipes
+
+
+def enter(window, tap, field: str, text: str) -> NumberKeypad:
+    window.page("recipes").edit_field(field)  # the row's tap (it may be scrolled out of view)
+    keypad = window.overlay()
+    assert isinstance(keypad, NumberKeypad)
+    tap(find_button(keypad, "key_clear"))
+    keys(tap, keypad, text)
+    tap(find_button(keypad, "okButton"))
+    return keypad
+
+
+def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
+    screen = open_recipes(window, tap)
+    # A round barrel of 760 mm that is not the machine's recipe (that one is edited on a copy).
+    barrique = database.get_recipe_by_name("Hogshead 300 l")
+    screen.select_recipe(barrique.id)
+    assert screen.preview.tilt_deg == screen.preview.tilt_b_deg  # round: one bevel
+    refused = enter(window, tap, "barrel_minor_diameter_mm", "800")  # longer than 760
+    assert refused.is_open and "barrel_minor_diameter_mm = 800" in refused.error_label.text()
+    tap(find_button(refused, "cancelButton"))
+    assert enter(window, tap, "barrel_minor_diameter_mm", "740").is_open is False
+    assert screen.draft.barrel_type is BarrelType.OVAL
+    assert find_button(window, "field_barrel_minor_diameter_mm").text() == "740.0 mm"
+    preview = screen.preview
+    assert preview.ok and preview.tilt_deg != preview.tilt_b_deg
+    tilt_text = screen.result_labels["tilt"].text()
+    assert tilt_text.startswith("A ") and " / B " in tilt_text
+
+    assert enter(window, tap, "target_width_mm", "300").is_open  # wider than any board
+    tap(find_button(window.overlay(), "cancelButton"))
+    assert enter(window, tap, "target_width_mm", "120").is_open is False
+    tap(find_button(window, "saveRecipe"))
+    stored = database.get_recipe(barrique.id)
+    assert (stored.barrel_minor_diameter_mm, stored.target_width_mm) == (740.0, 120.0)
