@@ -78,10 +78,14 @@ def world_bus(
     channel: str,
     input_bits: Mapping[str, int] = INPUT_BITS,
     analog: Mapping[str, int] | None = None,
+    **options: Any,
 ) -> WorldBus:
     """The world's drives and I/O as CANopen nodes on ``channel``, wired as
-    :func:`machine_data` configures the backend (or as ``input_bits`` and ``analog`` say)."""
-    return WorldBus(world, channel, NODE_IDS, COUNTS, IO_NODE, input_bits, OUTPUT_BITS, analog)
+    :func:`machine_data` configures the backend (or as ``input_bits``, ``analog`` and the
+    :class:`WorldBus` ``options`` say)."""
+    return WorldBus(
+        world, channel, NODE_IDS, COUNTS, IO_NODE, input_bits, OUTPUT_BITS, analog, **options
+    )
 
 
 @dataclass
@@ -127,12 +131,16 @@ def config(channel: str) -> MachineConfig:
     return parse_config(machine_data(channel))
 
 
+def zero_world(config: MachineConfig) -> SimWorld:
+    """The world with every axis at 0 on its encoder (absolute or not), so that counts in a
+    test are plain numbers."""
+    return SimWorld(config, SimSettings(start_position=dict.fromkeys(NODE_IDS, 0.0)))
+
+
 @pytest.fixture
 def bus(config: MachineConfig, channel: str) -> Iterator[WorldBus]:
-    """The simulated world's drives and I/O on the test's channel; every axis starts at 0 on
-    its encoder (absolute or not), so that counts in a test are plain numbers."""
-    world = SimWorld(config, SimSettings(start_position=dict.fromkeys(NODE_IDS, 0.0)))
-    created = world_bus(world, channel)
+    """The simulated world's drives and I/O on the test's channel."""
+    created = world_bus(zero_world(config), channel)
     yield created
     created.close()
 

@@ -68,9 +68,10 @@ class WorldBus:
         analog: Mapping[str, int] | None = None,
         *,
         without_consumer: Collection[str] = (),
+        inverted_inputs: Collection[str] = (),
     ) -> None:
         """``without_consumer``: drives whose dictionary has no 0x1016 (no heartbeat
-        consumer)."""
+        consumer); ``inverted_inputs``: functions whose terminal reads 0 when they are on."""
         self.world = world
         self.lock = threading.RLock()
         self.network = SimNetwork(channel)
@@ -85,7 +86,7 @@ class WorldBus:
             for name, node in node_ids.items()
         }
         self.clock = self.drives[next(iter(node_ids))]
-        self.io = WorldIo(self, io_node, input_bits, output_bits, analog or {})
+        self.io = WorldIo(self, io_node, input_bits, output_bits, analog or {}, inverted_inputs)
         for node in self.network.nodes:
             node.boot()
 
@@ -230,8 +231,10 @@ class WorldIo(SimIoNode):
         input_bits: Mapping[str, int],
         output_bits: Mapping[str, int],
         analog: Mapping[str, int],
+        inverted: Collection[str] = (),
     ) -> None:
         self.bus = bus
+        self.inverted = frozenset(inverted)
         self.input_bits = dict(input_bits)
         self.output_bits = dict(output_bits)
         self.analog = {sub: name for name, sub in analog.items()}  # 0x6401 sub -> input
@@ -250,7 +253,9 @@ class WorldIo(SimIoNode):
         if index == obj.READ_INPUT_8BIT and subindex >= 1:
             image = self.bus.world.inputs()
             self.inputs = sum(
-                1 << bit for name, bit in self.input_bits.items() if getattr(image, name)
+                1 << bit
+                for name, bit in self.input_bits.items()
+                if bool(getattr(image, name)) is not (name in self.inverted)
             )
         return super().on_read(index, subindex)
 
