@@ -104,8 +104,12 @@ wheel="$(echo "$work"/wheels/stave_jointer-*.whl)"
 [ -f "$wheel" ] || die "pip wheel made no stave_jointer wheel"
 
 step "dependencies ($([ $update_lock = 1 ] && echo "resolved afresh" || echo "pinned by $lock"))"
+# Wheels only, so that the package holds what PyPI built and tested; evdev (the USB pendant's
+# reader) publishes no wheels, only its source, so it is compiled here (gcc and the kernel's
+# input headers: scripts/ensure-env.sh installs them).
+formats=(--only-binary=:all: --no-binary=evdev)
 if [ $update_lock = 1 ]; then
-  "${pip[@]}" install --no-compile --only-binary=:all: "$wheel"
+  "${pip[@]}" install --no-compile "${formats[@]}" "$wheel"
   {
     echo "# The Python packages in the stave-jointer Debian package, exactly."
     echo "# Written by: packaging/build-deb.sh --update-lock (Python $py_version, $arch)."
@@ -115,7 +119,7 @@ if [ $update_lock = 1 ]; then
   step "wrote $lock"
 else
   [ -f "$lock" ] || die "$lock is missing: run packaging/build-deb.sh --update-lock"
-  "${pip[@]}" install --no-compile --only-binary=:all: -c "$lock" "$wheel" ||
+  "${pip[@]}" install --no-compile "${formats[@]}" -c "$lock" "$wheel" ||
     die "pip could not install the pinned dependencies; if pyproject.toml's dependencies" \
       "changed, rewrite the lock: packaging/build-deb.sh --update-lock"
 fi
