@@ -450,6 +450,30 @@ class SimDrive:
         if jammed:
             self._v = 0.0
 
+    def power_cycle(self) -> None:
+        """Power off and on again: the drive's state is lost (an incremental encoder counts
+        from 0 again and the axis is no longer homed); what the world imposes (safe torque
+        off, a cut link, a jam, stuck switches, an injected fault) stays."""
+        kept = (
+            self._sto,
+            self._link_ok,
+            self._hold_fault,
+            self._jammed,
+            self._stuck_positive,
+            self._stuck_negative,
+        )
+        self.__init__(self.name, self.params, self._p, self._emcy)  # type: ignore[misc]
+        (
+            self._sto,
+            self._link_ok,
+            self._hold_fault,
+            self._jammed,
+            self._stuck_positive,
+            self._stuck_negative,
+        ) = kept
+        self._update_limits()
+        self._was_pos, self._was_neg = self._lim_pos, self._lim_neg
+
     def move_by_hand(self, position: float) -> None:
         """The load pushed to ``position`` (encoder frame) while the drive applies no torque,
         as a setter does on a disabled axis; a powered drive holds its axis, so it refuses."""

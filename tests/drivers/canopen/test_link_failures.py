@@ -1,6 +1,6 @@
 """When the link fails: heartbeat loss, a rebooted node, missing TPDOs, a dead receive
 thread, SDO aborts and timeouts. Each one must become an event and an error, be latched, and
-recover only through configure() and activate()."""
+recover only through configure() and activate(). The nodes are the simulated world's."""
 
 from __future__ import annotations
 
@@ -18,7 +18,8 @@ from app.drivers.contracts import (
     LifecycleError,
     LifecycleState,
 )
-from tests.drivers.canopen.conftest import Bench, enable_all, machine_data, period, start
+from tests.drivers.canopen.conftest import enable_all, machine_data, period, run_until, start
+from tests.drivers.canopen.world_nodes import WorldBus
 
 S = Cia402State
 
@@ -51,17 +52,17 @@ def kinds(events) -> list[tuple[DeviceEventKind, str]]:
     return [(e.kind, e.device) for e in events]
 
 
-def test_heartbeat_loss_latches_until_reconfigured(backend, bench: Bench):
+def test_heartbeat_loss_latches_until_reconfigured(backend, bus: WorldBus):
     start(backend)
     enable_all(backend)
-    bench.drives["Y"].silence_heartbeat()
+    bus.drives["Y"].silence_heartbeat()
     error = periods_until_error(backend)
     assert error.device == "Y (node 2)" and "heartbeat lost" in str(error)
     assert (DeviceEventKind.COMMUNICATION_LOST, "Y (node 2)") in kinds(backend.motion.events())
     assert backend.motion.lifecycle_state is LifecycleState.ERROR
     # the drives still reachable were told to quick stop; nothing restarts them
-    assert bench.drives["X"].wait(lambda: bench.drives["X"].state is S.QUICK_STOP_ACTIVE)
-    assert bench.drives["Z"].state is S.QUICK_STOP_ACTIVE
+    assert bus.drives["X"].wait(lambda: bus.drives["X"].drive.state is S.QUICK_STOP_ACTIVE)
+    assert bus.drives["Z"].drive.state is S.QUICK_STOP_ACTIVE
     with pytest.raises(CommunicationError, match="heartbeat lost"):
         backend.motion.read_axes()
     with pytest.raises(CommunicationError):
@@ -71,7 +72,7 @@ def test_heartbeat_loss_latches_until_reconfigured(backend, bench: Bench):
     with pytest.raises(LifecycleError):
         backend.motion.activate()  # configure first: the node may have lost its mapping
 
-    bench.drives["Y"].silence_heartbeat(False)  # the heartbeat comes back
+    bus.drives["Y"].silence_heartbeat(False)  # the heartbeat comes back
     events = events_until(backend.motion, DeviceEventKind.COMMUNICATION_RESTORED)
     assert (DeviceEventKind.COMMUNICATION_RESTORED, "Y (node 2)") in kinds(events)
     with pytest.raises(CommunicationError):  # heard again, but still latched
@@ -84,14 +85,12 @@ def test_heartbeat_loss_latches_until_reconfigured(backend, bench: Bench):
     assert not any(f.enabled for f in feedback.values())  # comes back disabled
 
 
-def test_a_rebooted_drive_is_lost_and_forgets_homing(backend, bench: Bench):
+def test_a_rebooted_drive_is_lost_and_forgets_homing(backend, bus: WorldBus):
     start(backend)
     enable_all(backend)
     backend.motion.start_homing("X")
-    from tests.drivers.canopen.conftest import run_until
-
-    run_until(backend, lambda fb: fb["X"].homed and not fb["X"].homing_active)
-    bench.drives["X"].reboot()
+    run_until(backend, lambda fb: fb["X"].homed and not fb["X"].homing_active, 2000)
+    bus.drives["X"].reboot()
     error = periods_until_error(backend)
     assert "left OPERATIONAL" in str(error) or "heartbeat" in str(error)
     backend.motion.deactivate()
@@ -100,13 +99,13 @@ def test_a_rebooted_drive_is_lost_and_forgets_homing(backend, bench: Bench):
     assert not backend.motion.read_axes()["X"].homed
 
 
-def test_missing_tpdos_are_a_lost_node(channel, bench: Bench):
+def test_missing_tpdos_are_a_lost_node(channel, bus: WorldBus):
     config = parse_config(machine_data(channel, pdo_miss_limit=3))
     backend = create_backend(config)
     try:
         start(backend)
-        with bench.drives["Z"].lock:  # Z stops answering SYNC, its heartbeat goes on
-            bench.drives["Z"].node.data_store[0x1800][1] = (0x183 | 1 << 31).to_bytes(4, "little")
+        with bus.drives["Z"].lock:  # Z stops answering SYNC, its heartbeat goes on
+            bus.drives["Z"].node.data_store[0x1800][1] = (0x183 | 1 << 31).to_bytes(4, "little")
         error = periods_until_error(backend)
         assert error.device == "Z (node 3)" and "no cyclic TPDO for 3 SYNCs" in str(error)
     finally:
@@ -115,23 +114,23 @@ def test_missing_tpdos_are_a_lost_node(channel, bench: Bench):
 
 
 @pytest.mark.filterwarnings("ignore::pytest.PytestUnhandledThreadExceptionWarning")
-def test_a_dead_receive_thread_is_an_event_not_silence(backend, bench: Bench):
+def test_a_dead_receive_thread_is_an_event_not_silence(backend, bus: WorldBus):
     start(backend)
     period(backend)
-    bus = backend.extras["canopen"]
-    bus.network.bus.shutdown()  # the interface goes away under the notifier
+    can_bus = backend.extras["canopen"]
+    can_bus.network.bus.shutdown()  # the interface goes away under the notifier
     periods_until_error(backend, 2.0)  # a send may notice it first: any error will do
     events = events_until(backend.motion, DeviceEventKind.RECEIVE_THREAD_DIED)
     events += backend.io.events()
     died = [e for e in events if e.kind is DeviceEventKind.RECEIVE_THREAD_DIED]
-    assert len(died) == 1 and died[0].device == "CAN virtual:" + bus.settings.channel
+    assert len(died) == 1 and died[0].device == "CAN virtual:" + can_bus.settings.channel
     assert "CanOperationError" in died[0].text
     with pytest.raises(CommunicationError):
         backend.io.read_inputs()
 
 
-def test_an_sdo_abort_fails_configure_with_its_code(backend, bench: Bench):
-    bench.drives["Z"].reject[(0x6065, 0)] = 0x08000022
+def test_an_sdo_abort_fails_configure_with_its_code(backend, bus: WorldBus):
+    bus.drives["Z"].reject[(0x6065, 0)] = 0x08000022
     with pytest.raises(DriverError) as caught:
         backend.motion.configure()
     error = caught.value
@@ -139,13 +138,13 @@ def test_an_sdo_abort_fails_configure_with_its_code(backend, bench: Bench):
     assert "0x6065:00 following error window" in str(error)
     assert "present device state" in str(error)
     assert backend.motion.lifecycle_state is LifecycleState.ERROR
-    del bench.drives["Z"].reject[(0x6065, 0)]
+    del bus.drives["Z"].reject[(0x6065, 0)]
     backend.motion.configure()  # from ERROR, once the cause is gone
     backend.motion.activate()
     assert backend.motion.lifecycle_state is LifecycleState.ACTIVE
 
 
-def test_an_unsupported_homing_method_is_refused_by_the_drive(channel, bench: Bench):
+def test_an_unsupported_homing_method_is_refused_by_the_drive(channel, bus: WorldBus):
     data = machine_data(channel)
     data["backend"]["canopen"]["axes"]["X"]["homing_method"] = 24  # valid CiA, not this drive
     backend = create_backend(parse_config(data))
@@ -160,7 +159,7 @@ def test_an_unsupported_homing_method_is_refused_by_the_drive(channel, bench: Be
         backend.motion.shutdown()
 
 
-def test_a_node_that_does_not_answer(channel, bench: Bench):
+def test_a_node_that_does_not_answer(channel, bus: WorldBus):
     data = machine_data(channel, sdo_timeout_ms=50)
     data["backend"]["canopen"]["axes"]["Z"]["node_id"] = 4  # nobody there
     backend = create_backend(parse_config(data))
@@ -172,10 +171,10 @@ def test_a_node_that_does_not_answer(channel, bench: Bench):
         backend.motion.shutdown()
 
 
-def test_io_node_loss_stops_the_io_not_silently(backend, bench: Bench):
+def test_io_node_loss_stops_the_io_not_silently(backend, bus: WorldBus):
     start(backend)
     period(backend)
-    bench.io.silence_heartbeat()
+    bus.io.silence_heartbeat()
     error = periods_until_error(backend)
     assert error.device == "I/O (node 10)"
     assert (DeviceEventKind.COMMUNICATION_LOST, "I/O (node 10)") in kinds(backend.io.events())

@@ -74,6 +74,7 @@ class WorldBus:
         consumer); ``inverted_inputs``: functions whose terminal reads 0 when they are on."""
         self.world = world
         self.lock = threading.RLock()
+        self._links = (True, True)  # the drives' and the I/O's link as last seen
         self.network = SimNetwork(channel)
         self.drives = {
             name: WorldDrive(
@@ -105,9 +106,15 @@ class WorldBus:
             self._silence_cut_links()
 
     def _silence_cut_links(self) -> None:
+        """Silence the nodes of a link the world cut, and hear them again when it is
+        restored; only on a change, so that a test may silence one node by itself."""
+        links = (self.world.link_ok("drives"), self.world.link_ok("io"))
+        if links == self._links:
+            return
+        self._links = links
         for drive in self.drives.values():
-            drive.silence_heartbeat(not self.world.link_ok("drives"))
-        self.io.silence_heartbeat(not self.world.link_ok("io"))
+            drive.silence_heartbeat(not links[0])
+        self.io.silence_heartbeat(not links[1])
 
     def close(self) -> None:
         self.network.close()
@@ -131,12 +138,21 @@ class WorldDrive(SimNode):
         self.drive = drive
         self.counts = counts
         self.record = DriveRecord()
+        self._powered = False  # the first reset_application is the node's start-up
         self._buffer: dict[int, int] | None = None
         self._emcy_seen = len(bus.world.emcy_log)
         od = obj.build_drive_od(node_id)
         if not heartbeat_consumer:
             del od[obj.CONSUMER_HEARTBEAT_TIME]
         super().__init__(bus.network, node_id, od)
+
+    def reset_application(self) -> None:
+        """A reboot of the node is a power cycle of the world's drive (not at start-up: the
+        world powered it up already)."""
+        if self._powered:
+            with self.bus.lock:
+                self.drive.power_cycle()
+        self._powered = True
 
     def move_by_hand(self, counts: int) -> None:
         """The axis pushed to ``counts`` on its encoder while its drive is not powered."""

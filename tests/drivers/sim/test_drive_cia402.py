@@ -239,6 +239,22 @@ def test_an_axis_moved_by_hand_stays_there_and_is_held_there_when_enabled() -> N
     assert drive.position == pytest.approx(120.0, abs=1e-9)
 
 
+def test_a_power_cycle_forgets_the_drive_state_and_keeps_the_world() -> None:
+    axis = make_config(axes={"X": {"encoder": "incremental"}}).axes["X"]
+    drive = SimDrive("X", DriveParams.from_config(axis, SimSettings(), 0.004, 4), 100.0, Emcy())
+    drive.step(DT)
+    drive.move_by_hand(30.0)
+    drive.stick_limit_switch(positive=True, active=True)
+    for word in PATHS[S.OPERATION_ENABLED]:
+        drive.write_controlword(word)
+    drive.power_cycle()
+    assert drive.state is S.NOT_READY_TO_SWITCH_ON and drive.controlword == 0
+    assert drive.position == 0.0 and not drive.homed  # an incremental encoder starts at 0
+    assert drive.true_position == pytest.approx(130.0) and drive.limit_positive
+    drive.step(DT)
+    assert drive.state is S.SWITCH_ON_DISABLED
+
+
 def test_statusword_bits_beyond_the_power_state() -> None:
     drive, _ = drive_in(S.OPERATION_ENABLED)
     assert drive.statusword & (1 << 12)  # CSP: the drive follows the command value
