@@ -7,7 +7,7 @@ continuation is planned (``planner/continuation.py``) are pure and tested on the
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 from app.data.recipe import Recipe
 from app.geometry.limits import StaveLimits
@@ -17,6 +17,7 @@ from app.machine.interrupted import InterruptedBoard
 from app.machine.planner.continuation import Continuation, plan_continuation
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.trajectory import Phase
+from app.table_outlines import TableOutline
 
 
 def interruption(
@@ -54,6 +55,7 @@ def continue_job(
     motion_limits: MotionLimits,
     *,
     resume: bool,
+    devices: Sequence[TableOutline] = (),
 ) -> ContinueJob:
     """The planning job (run on the planning worker) of Resume or Abandon: the same board
     planned again from the recipe and its measured width, then the way on from where the
@@ -62,9 +64,11 @@ def continue_job(
     home = (params["home_x_mm"], params["home_y_mm"], params["home_z_deg"])
 
     def job(start: tuple[float, float, float]) -> tuple[PlannedStave, Continuation]:
-        planned = plan_board(recipe, board.width_mm, params, stave_limits, motion_limits, home)
+        planned = plan_board(
+            recipe, board.width_mm, params, stave_limits, motion_limits, home, devices=devices
+        )
         continuation = plan_continuation(
-            planned.toolpath, board.phase, start, motion_limits, resume=resume
+            planned.toolpath, board.phase, start, motion_limits, resume=resume, devices=devices
         )
         return planned, continuation
 

@@ -62,10 +62,13 @@ class CycleControl(ControllerCore):
             self.barrel = replace(self.barrel.next_barrel(), number=self.barrels.next_number())
             self.barrels.started(self.barrel, recipe)
         barrel, choice = self.barrel, self.board_choice
+        clamps = self.config.table_devices.clamps  # closed on the board while the cutter moves
 
         def plan_job(width_mm: float, start: tuple[float, float, float]) -> PlannedStave:
             if barrel is None:
-                return plan_board(recipe, width_mm, params, limits_stave, limits_motion, start)
+                return plan_board(
+                    recipe, width_mm, params, limits_stave, limits_motion, start, devices=clamps
+                )
             return plan_barrel_board(
                 barrel, choice, recipe, width_mm, params, limits_stave, limits_motion, start
             )
@@ -149,7 +152,15 @@ class CycleControl(ControllerCore):
             self._refuse(refusal(Reason.RECIPE_GONE_ABANDON, repr(board.recipe_name)))
             return
         recipe, params, limits_stave, limits_motion = self._planning(recipe)
-        job = continue_job(recipe, board, params, limits_stave, limits_motion, resume=resume)
+        job = continue_job(
+            recipe,
+            board,
+            params,
+            limits_stave,
+            limits_motion,
+            resume=resume,
+            devices=self.config.table_devices.clamps,  # closed: the board is clamped
+        )
         cycle = self._new_cycle(
             recipe=recipe,
             plan_job=None,

@@ -10,7 +10,7 @@ the motion planning is added here.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from app.data.recipe import Recipe
@@ -30,6 +30,7 @@ from app.machine.planner.stave_plan import (
     from_first_cut,
     plan_stave,
 )
+from app.table_outlines import TableOutline
 
 
 class PlanningError(Exception):
@@ -74,6 +75,7 @@ def plan_board(
     motion_limits: MotionLimits,
     start_xyz: tuple[float, float, float],
     stave: StaveSpec | None = None,
+    devices: Sequence[TableOutline] = (),
 ) -> PlannedStave:
     """Validate the measured width against the recipe and the machine, then plan the cut.
 
@@ -106,7 +108,7 @@ def plan_board(
     if math.dist(start_xyz, (*first.start, first.z_start_deg)) > JOIN_TOLERANCE_MM:
         toolpath = from_first_cut(toolpath)  # straight to the lead-in, not through home
     try:
-        plan = plan_stave(toolpath, start_xyz, motion_limits)
+        plan = plan_stave(toolpath, start_xyz, motion_limits, devices=devices)
     except KeepOutRefused as exc:
         raise PlanningError(AlarmCode.APPROACH_CROSSES_BOARD, str(exc)) from exc
     except (ValueError, ArithmeticError) as exc:

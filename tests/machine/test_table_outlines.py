@@ -13,12 +13,17 @@ from typing import Any
 import pytest
 
 from app.config import ConfigError, default_config_path, parse_config
+from app.data.database import Database
 from app.drivers.contracts import InputImage
 from app.geometry.limits import StaveLimits
 from app.machine import commands as cmd
+from app.machine.alarms import AlarmCode
+from app.machine.cycle_plan import PlanningError, plan_board
+from app.machine.planner.chunk import Chunk
 from app.machine.planner.jog_keepout import jog_reach
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
-from app.machine.process_params import stave_limits
+from app.machine.planner.trajectory import Phase
+from app.machine.process_params import motion_limits, stave_limits
 from app.machine.refusals import Reason
 from app.machine.states import MachineState
 from app.table_outlines import TableDevices, TableOutline
@@ -188,3 +193,34 @@ def test_go_to_position_goes_around_a_closed_clamp_on_the_machine(tmp_path: Path
         assert c.manual.position("Y") == pytest.approx(edge + 10.0)
     finally:
         rig.runtime.shutdown()
+
+
+def test_the_cycle_refuses_a_board_whose_travel_runs_through_a_clamp(tmp_path: Path) -> None:
+    config = parse_config({})
+    with Database.open(tmp_path / "stave.db", limits=stave_limits(config)) as db:
+        params, recipe = db.get_parameters(), db.list_recipes()[0]
+    home = (params["home_x_mm"], params["home_y_mm"], params["home_z_deg"])
+
+    def plan(devices: tuple[TableOutline, ...]) -> list[Chunk]:
+        planned = plan_board(
+            recipe,
+            150.0,
+            params,
+            stave_limits(config),
+            motion_limits(config, params),
+            home,
+            devices=devices,
+        )
+        chunks = [c.chunk for c in planned.plan.chunks if c.chunk.phase is Phase.APPROACH]
+        return [c for c in chunks if c.path is not None]  # the travel, not the tilt
+
+    travel = plan(())[0]  # from home to the first lead-in
+    (ax, ay, _), (bx, by, _) = travel.start_xyz(), travel.end_xyz()
+    mx, my = (ax + bx) / 2.0, (ay + by) / 2.0
+    clamp = TableOutline("clamp 1", mx - 5.0, mx + 5.0, my - 5.0, my + 5.0)
+    with pytest.raises(PlanningError) as refused:
+        plan((clamp,))
+    assert refused.value.code is AlarmCode.APPROACH_CROSSES_BOARD
+    assert "runs through clamp 1" in str(refused.value)
+    aside = TableOutline("clamp 1", 3000.0, 3100.0, 385.0, 415.0)  # beyond the board: clear
+    assert plan((aside,)) == plan(())

@@ -32,6 +32,7 @@ from app.machine.planner.path import ArcPiece, LinePiece, Path, Piece
 from app.machine.planner.point_to_point import point_to_point_chunk
 from app.machine.planner.stave_plan import StavePlan, plan_stave
 from app.machine.planner.trajectory import Phase
+from app.table_outlines import TableOutline
 
 XYZ = tuple[float, float, float]
 
@@ -167,9 +168,14 @@ def _remaining_toolpath(toolpath: ToolPath, side: str) -> ToolPath:
 
 
 def _clear_chunks(
-    toolpath: ToolPath, phase: Phase, xyz: XYZ, target: XYZ, limits: MotionLimits
+    toolpath: ToolPath,
+    phase: Phase,
+    xyz: XYZ,
+    target: XYZ,
+    limits: MotionLimits,
+    devices: Sequence[TableOutline],
 ) -> list[Chunk]:
-    keep_out = TableKeepOut.around_toolpath(toolpath)
+    keep_out = TableKeepOut.around_toolpath(toolpath, devices)
     chunks: list[Chunk] = []
     here = xyz
     if keep_out.inside(xyz):
@@ -185,7 +191,13 @@ def _clear_chunks(
 
 
 def plan_continuation(
-    toolpath: ToolPath, phase: Phase, xyz: XYZ, limits: MotionLimits, *, resume: bool
+    toolpath: ToolPath,
+    phase: Phase,
+    xyz: XYZ,
+    limits: MotionLimits,
+    *,
+    resume: bool,
+    devices: Sequence[TableOutline] = (),
 ) -> Continuation:
     """Resume (``resume`` True) or abandon the board whose cut stopped in ``phase`` with the
     cutter at ``xyz``. Raises KeepOutRefused (a PlannerError) if no safe way exists."""
@@ -199,7 +211,7 @@ def plan_continuation(
         remaining = _remaining_toolpath(toolpath, side)
         first = remaining.segments[0]
         target = (first.start[0], first.start[1], first.z_start_deg)
-        cut = plan_stave(remaining, target, limits)
-    chunks = _clear_chunks(toolpath, phase, xyz, target, limits)
+        cut = plan_stave(remaining, target, limits, devices=devices)
+    chunks = _clear_chunks(toolpath, phase, xyz, target, limits, devices)
     clear = ChunkedTrajectory(chunks) if chunks else None
     return Continuation(clear, cut, side)

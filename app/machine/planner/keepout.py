@@ -196,11 +196,11 @@ class TableKeepOut:
         if xy_path is None:
             raise KeepOutRefused(
                 f"no way from X {a[0]:.1f} Y {a[1]:.1f} to X {b[0]:.1f} Y {b[1]:.1f} mm "
-                f"around {self._obstacle_names(tilt)} within the axis travel"
+                f"around {self.obstacle_names(tilt)} within the axis travel"
             )
         return _with_tilt(xy_path, a[2], b[2])
 
-    def _obstacle_names(self, tilt_deg: float) -> str:
+    def obstacle_names(self, tilt_deg: float) -> str:
         names = list(dict.fromkeys(name for name, _ in self.boxes(tilt_deg)))
         return " and ".join(names) if names else "the board"
 

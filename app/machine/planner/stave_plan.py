@@ -37,10 +37,11 @@ from app.geometry.segments import ArcSegment, Segment
 from app.geometry.toolpath import ToolPath
 from app.machine.planner.chunk import Chunk, make_chunk, make_dwell
 from app.machine.planner.chunked import ChunkedTrajectory
-from app.machine.planner.keepout import TableKeepOut, routed_chunks
+from app.machine.planner.keepout import KeepOutRefused, TableKeepOut, routed_chunks
 from app.machine.planner.limits import MotionLimits
 from app.machine.planner.path import ArcPiece, FloatArray, LinePiece, Path, Piece
 from app.machine.planner.trajectory import Phase, PlannerError
+from app.table_outlines import TableOutline
 
 DEFAULT_SETTLE_S = 0.1
 """Dwell at rest at each lead-in start before a side is cut, so that the drives settle
@@ -125,15 +126,49 @@ def _chunk(run: Sequence[Segment], phase: Phase, limits: MotionLimits) -> Chunk:
     return make_chunk(phase, path, run[0].start, z_start, z_end, limits.x, limits.y, limits.z, feed)
 
 
+_TRAVEL_SAMPLES = 16  # points per travel segment checked against the devices' boxes
+
+
+def _check_travel_clear_of(devices: Sequence[TableOutline], toolpath: ToolPath) -> None:
+    """The tool path's own travel (from home, the repositioning, the return) goes around the
+    board by construction; a clamp configured beyond it is checked here, and the board is
+    refused (KeepOutRefused) rather than driven into it."""
+    if not devices:
+        return
+    keep_out = replace(TableKeepOut.around_toolpath(toolpath, devices), board_on_table=False)
+    for segment in toolpath.segments:
+        if segment.cutting or segment.length_mm == 0.0:
+            continue
+        points = [
+            (
+                *segment.point_at(segment.length_mm * k / _TRAVEL_SAMPLES),
+                segment.z_at(segment.length_mm * k / _TRAVEL_SAMPLES),
+            )
+            for k in range(_TRAVEL_SAMPLES + 1)
+        ]
+        if keep_out.crossing(points) is not None:
+            x, y = segment.start
+            raise KeepOutRefused(
+                f"the travel from X {x:.1f} Y {y:.1f} mm runs through "
+                f"{keep_out.obstacle_names(max(abs(p[2]) for p in points))}: "
+                "move the clamps' outline in [keep_out] or the start position"
+            )
+
+
 def _chunks(
-    toolpath: ToolPath, start_xyz: Sequence[float], limits: MotionLimits, settle_s: float
+    toolpath: ToolPath,
+    start_xyz: Sequence[float],
+    limits: MotionLimits,
+    settle_s: float,
+    devices: Sequence[TableOutline],
 ) -> list[Chunk]:
     segments = toolpath.segments
     if not segments:
         raise PlannerError("the tool path has no segments")
     first = segments[0]
+    _check_travel_clear_of(devices, toolpath)
     chunks: list[Chunk] = routed_chunks(
-        TableKeepOut.around_toolpath(toolpath),
+        TableKeepOut.around_toolpath(toolpath, devices),
         start_xyz,
         (*first.start, first.z_start_deg),
         limits,
@@ -182,13 +217,14 @@ class StavePlan(ChunkedTrajectory):
         start_xyz: Sequence[float],
         limits: MotionLimits,
         settle_s: float = DEFAULT_SETTLE_S,
+        devices: Sequence[TableOutline] = (),
     ) -> None:
         if not (isinstance(settle_s, int | float) and math.isfinite(settle_s) and settle_s >= 0):
             raise PlannerError(f"settle_s = {settle_s!r} is not allowed: a finite number >= 0")
         self.toolpath = toolpath
         self.limits = limits
         self.settle_s = float(settle_s)
-        super().__init__(_chunks(toolpath, start_xyz, limits, self.settle_s))
+        super().__init__(_chunks(toolpath, start_xyz, limits, self.settle_s, devices))
 
     def _side_chunks(self, side: str) -> list[Chunk]:
         if side not in _CUT_PHASES:
@@ -262,9 +298,11 @@ def plan_stave(
     limits: MotionLimits,
     *,
     settle_s: float = DEFAULT_SETTLE_S,
+    devices: Sequence[TableOutline] = (),
 ) -> StavePlan:
     """Plan the whole stave from rest at ``start_xyz`` to rest at the tool path's end (home),
-    dwelling ``settle_s`` at each lead-in start.
+    dwelling ``settle_s`` at each lead-in start; the approach goes around the board and
+    ``devices`` (the clamps' outlines: closed while the cutter moves).
 
     Raises PlannerError (a ValueError) naming what is wrong if it cannot be planned."""
-    return StavePlan(toolpath, start_xyz, limits, settle_s)
+    return StavePlan(toolpath, start_xyz, limits, settle_s, devices)
