@@ -20,10 +20,11 @@ debs=(python3-venv libgl1 libegl1 libopengl0 libxkbcommon0 libxkbcommon-x11-0 li
       gcc python3-dev linux-libc-dev)  # python-evdev (USB pendants) builds from source
 # The test set-up also needs peers we did not write: LinuxCNC's standalone G-code interpreter
 # rs274 (linuxcnc-uspace; without its recommends, which would pull in a real-time kernel), and
-# an X server without a window manager (xvfb, x11-utils's xwininfo) for the kiosk test.
+# an X server without a window manager (xvfb, x11-utils's xwininfo) for the kiosk test, and
+# the panel's own kiosk compositor (cage, with Xwayland) for the Debian package's kiosk test.
 dev_debs=()
 if [ "$extra" = dev ]; then
-  dev_debs=(linuxcnc-uspace xvfb x11-utils)
+  dev_debs=(linuxcnc-uspace xvfb x11-utils cage xwayland)
 fi
 if command -v dpkg >/dev/null 2>&1; then
   missing=()
