@@ -33,6 +33,13 @@ import numpy as np
 
 from app.cli.profile_args import ProfileOptionError, add_profile_arguments, profile_from_args
 from app.cli.recipe_args import add_recipe_source
+from app.cli.simulate_jog import (
+    JogOptionError,
+    add_jog_arguments,
+    describe_jog,
+    hand_jogs,
+    run_hand_jogs,
+)
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
 from app.drivers.contracts import FAULT_KINDS, FaultInjector
@@ -219,6 +226,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="with --inject: after the alarm clear the fault, Reset, then Resume the "
         "interrupted board (as an operator would)",
     )
+    add_jog_arguments(parser)
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--realtime", action="store_true", help="run at real-time speed")
     parser.add_argument("--config", type=Path, help="machine configuration (TOML)")
@@ -435,8 +443,20 @@ def simulate(
     if args.resume and injection is None:
         raise UsageError("--resume is not allowed without --inject: there is nothing to resume")
     widths = _barrel_widths(args)
-    if args.width is None and not args.barrel:
-        raise UsageError("--width is missing: the width of every board in mm (or --barrel)")
+    stick = config.pendant.joystick
+    if args.joystick and not stick.fitted:
+        raise UsageError("--joystick is not allowed: the configuration has no joystick fitted")
+    if args.handwheel and not config.pendant.handwheel.fitted:
+        raise UsageError("--handwheel is not allowed: the configuration has no handwheel fitted")
+    try:
+        jogs = hand_jogs(args, ("X", "Y", "Z") if stick.z_fitted else ("X", "Y"))
+    except JogOptionError as exc:
+        raise UsageError(str(exc)) from exc
+    if args.width is None and not args.barrel and not jogs:
+        raise UsageError(
+            "--width is missing: the width of every board in mm (or --barrel, or only "
+            "--handwheel / --joystick)"
+        )
     if args.width is not None and (not math.isfinite(args.width) or args.width <= 0):
         raise UsageError(f"--width {args.width:g} is not allowed: a finite number of mm > 0")
     if not 1 <= args.cycles <= MAX_CYCLES:
@@ -481,10 +501,15 @@ def simulate(
                 raise UsageError(f"--barrel: {runtime.controller.message}")
         with _tick_pacing(runtime, args.realtime):
             _home(runtime)
+            jogged = run_hand_jogs(runtime, jogs) if jogs else []
+            if not args.json:
+                for entry in jogged:
+                    print(describe_jog(entry), file=out)
             reports = []
             if args.barrel:
                 reports = _raise_barrel(runtime, args.width, widths, watch, out, args.json)
-            for _ in range(0 if args.barrel else args.cycles):
+            boards = args.cycles if args.width is not None and not args.barrel else 0
+            for _ in range(boards):
                 report = _run_cycle(runtime, args.width, injection, watch, args.resume)
                 reports.append(report)
                 if not args.json:
@@ -516,6 +541,8 @@ def simulate(
             },
             "cycles": [_cycle_json(r) for r in reports],
         }
+        if jogs:
+            result["jogs"] = jogged
         if args.barrel:
             result.update(_barrel_result(c, reports))
         return result

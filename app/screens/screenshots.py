@@ -278,6 +278,16 @@ def render_screenshots(
             detail = window.overlay()
             if detail is not None:
                 detail.reject()
+
+            # The simulation page with the handwheel's and the joystick's controls.
+            if technician is not None:
+                window.session.set_user(technician)
+            window.show_screen("system")
+            system_page = window.page("system")
+            system_page.show_group("simulation")  # type: ignore[attr-defined]
+            system_page.sim_scroll.ensureWidgetVisible(system_page.sim_pendant)  # type: ignore[attr-defined]
+            shoot("system-simulation")
+            window.session.logout()
         finally:
             window.poller.stop()
             window.close()

@@ -57,6 +57,7 @@ from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.readouts import set_text, styled_label
+from app.screens.widgets.sim_pendant import SimPendantPanel
 
 GROUP_ORDER = ("home", "tool", "start", "motion", "path", "limits", "jog", "production")
 UNIT_SYMBOLS = {"deg": "°", "deg/s": "°/s", "deg/s²": "°/s²"}
@@ -154,6 +155,7 @@ class SystemScreen(Screen):
         # simulation page
         sim_page = QFrame()
         sim_page.setObjectName("panel")
+        sim_content = QWidget()  # taller than the page at 1024x768: it scrolls
         self.sim_title = styled_label("", "title")
         self.sim_note = styled_label("", "caption")
         self.sim_note.setWordWrap(True)
@@ -179,13 +181,25 @@ class SystemScreen(Screen):
         sim_actions.addWidget(self.load_board_button)
         sim_actions.addWidget(self.remove_board_button)
         sim_actions.addWidget(self.replace_board_button)
-        sim_layout = QVBoxLayout(sim_page)
+        sim_layout = QVBoxLayout(sim_content)
         sim_layout.setContentsMargins(10, 6, 10, 8)
         sim_layout.addWidget(self.sim_title)
         sim_layout.addWidget(self.sim_note)
         sim_layout.addLayout(sim_grid)
         sim_layout.addLayout(sim_actions)
+        self.sim_pendant = SimPendantPanel(self.context.send)
+        sim_layout.addWidget(self.sim_pendant)
         sim_layout.addStretch(1)
+        self.sim_scroll = QScrollArea()
+        self.sim_scroll.setWidgetResizable(True)
+        self.sim_scroll.setWidget(sim_content)
+        self.sim_scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        QScroller.grabGesture(
+            self.sim_scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture
+        )
+        sim_page_layout = QVBoxLayout(sim_page)
+        sim_page_layout.setContentsMargins(0, 0, 0, 0)
+        sim_page_layout.addWidget(self.sim_scroll)
         self.pages.addWidget(param_page)
         self.pages.addWidget(log_page)
         self.pages.addWidget(sim_page)
@@ -260,13 +274,14 @@ class SystemScreen(Screen):
             self.tr(
                 "Only on the simulated machine: inject a fault to test the alarms, clear the "
                 "injected faults (the machine stays latched until Reset), put a board in, take "
-                "it off or replace it."
+                "it off or replace it, and work the handwheel and the joystick (in manual mode)."
             )
         )
         self.clear_faults_button.setText(self.tr("Clear injected faults"))
         self.load_board_button.setText(self.tr("Put a board in"))
         self.remove_board_button.setText(self.tr("Take the board off"))
         self.replace_board_button.setText(self.tr("Replace the board"))
+        self.sim_pendant.retranslate()
         self.opcua_page.retranslate()
         if self.unlocked:
             self.show_group(self.group)
@@ -456,3 +471,5 @@ class SystemScreen(Screen):
         for button in (self.remove_board_button, self.replace_board_button):
             button.setEnabled(simulation and on_table and not board_reason)
             button.setToolTip(board_reason)
+        if self.pages.currentWidget() is self.sim_page:
+            self.sim_pendant.update_snapshot(snapshot, simulation)

@@ -3389,9 +3389,47 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>SimPendantPanel</name>
+    <message>
+        <location filename="../../app/screens/widgets/sim_pendant.py" line="+168" />
+        <source>Handwheel and joystick</source>
+        <translation>Handwheel and joystick</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handwheel</source>
+        <translation>Handwheel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Joystick (hold)</source>
+        <translation>Joystick (hold)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Off</source>
+        <translation>Off</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Hold enable</source>
+        <translation>Hold enable</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Leave manual mode</source>
+        <translation>Leave manual mode</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Enter manual mode</source>
+        <translation>Enter manual mode</translation>
+    </message>
+</context>
+<context>
     <name>States</name>
     <message>
-        <location line="-44" />
+        <location filename="../../app/screens/texts.py" line="-44" />
         <source>STARTING UP</source>
         <translation>STARTING UP</translation>
     </message>
@@ -3565,7 +3603,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+217" />
+        <location filename="../../app/screens/system_screen.py" line="+231" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -3674,8 +3712,8 @@ Log in as technician or service to change them.</translation>
     </message>
     <message>
         <location line="+13" />
-        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</source>
-        <translation>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</translation>
+        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it, and work the handwheel and the joystick (in manual mode).</source>
+        <translation>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it, and work the handwheel and the joystick (in manual mode).</translation>
     </message>
     <message>
         <location line="+5" />
@@ -3698,7 +3736,7 @@ Log in as technician or service to change them.</translation>
         <translation>Replace the board</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+65" />
         <source>needs %1</source>
         <translation>needs %1</translation>
     </message>

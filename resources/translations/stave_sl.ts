@@ -3389,9 +3389,47 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>SimPendantPanel</name>
+    <message>
+        <location filename="../../app/screens/widgets/sim_pendant.py" line="+168"/>
+        <source>Handwheel and joystick</source>
+        <translation>Ročno kolo in igralna palica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Handwheel</source>
+        <translation>Ročno kolo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Joystick (hold)</source>
+        <translation>Igralna palica (držite)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Izklop</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Hold enable</source>
+        <translation>Držite omogočanje</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Leave manual mode</source>
+        <translation>Zapusti ročni način</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Enter manual mode</source>
+        <translation>Vstopi v ročni način</translation>
+    </message>
+</context>
+<context>
     <name>States</name>
     <message>
-        <location line="-44"/>
+        <location filename="../../app/screens/texts.py" line="-44"/>
         <source>STARTING UP</source>
         <translation>ZAGANJANJE</translation>
     </message>
@@ -3565,7 +3603,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+217"/>
+        <location filename="../../app/screens/system_screen.py" line="+231"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -3674,8 +3712,8 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
     </message>
     <message>
         <location line="+13"/>
-        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it.</source>
-        <translation>Samo na simuliranem stroju: vstavite napako za preizkus alarmov, počistite vstavljene napake (stroj ostane zaklenjen do ponastavitve), vstavite desko, jo odstranite ali zamenjajte.</translation>
+        <source>Only on the simulated machine: inject a fault to test the alarms, clear the injected faults (the machine stays latched until Reset), put a board in, take it off or replace it, and work the handwheel and the joystick (in manual mode).</source>
+        <translation>Samo na simuliranem stroju: vstavite napako za preizkus alarmov, počistite vstavljene napake (stroj ostane zaklenjen do ponastavitve), vstavite desko, jo odstranite ali zamenjajte ter upravljajte ročno kolo in igralno palico (v ročnem načinu).</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3698,7 +3736,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
         <translation>Zamenjaj desko</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+65"/>
         <source>needs %1</source>
         <translation>potrebna raven: %1</translation>
     </message>

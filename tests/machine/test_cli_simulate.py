@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from app.cli import main
+from app.config import default_config_path
 
 BARRIQUE = "Barrique 225 l Bordeaux"
 
@@ -198,3 +199,36 @@ def test_inject_then_resume_never_crosses_the_board_in_the_trace(
 def test_resume_needs_an_injection(capsys) -> None:
     code, _, err = simulate(capsys, "--recipe", BARRIQUE, "--width", "150", "--resume")
     assert code == 2 and "--resume is not allowed without --inject" in err
+
+
+def test_handwheel_and_joystick_in_manual_mode_report_where_the_axes_ended(
+    capsys, tmp_path: Path
+) -> None:
+    config = tmp_path / "machine.toml"  # absolute encoders: ready at power-up, no homing run
+    shipped = default_config_path().read_text(encoding="utf-8")
+    config.write_text(shipped.replace('encoder = "incremental"', 'encoder = "absolute"'))
+    trace = tmp_path / "jog.csv"
+    code, out, _ = simulate(
+        capsys,
+        *("--recipe", BARRIQUE, "--config", str(config), "--trace", str(trace), "--json"),
+        *("--handwheel", "y:-100:10", "--joystick", "X:0.5:0.5"),
+    )
+    assert code == 0
+    result = json.loads(out)
+    assert result["cycles"] == [] and result["final_state"] == "ready"
+    wheel, stick = result["jogs"]
+    assert (wheel["source"], wheel["axis"], wheel["multiplier"]) == ("handwheel", "Y", 10)
+    assert wheel["moved"] == pytest.approx(-1.0, abs=1e-9)  # -100 counts x10 x 0.001 mm
+    assert wheel["actual"]["Y"] == pytest.approx(wheel["command"]["Y"], abs=0.005)
+    assert stick["source"] == "joystick" and stick["moved"] > 0.1
+    assert stick["command"]["Y"] == wheel["command"]["Y"]  # the stick on X left Y alone
+    with trace.open(encoding="utf-8") as rows:
+        states = {row["state"] for row in csv.DictReader(rows)}
+    assert "manual" in states
+
+
+def test_a_bad_handwheel_turn_is_one_line_and_exit_2(capsys) -> None:
+    code, _, err = simulate(capsys, "--recipe", BARRIQUE, "--handwheel", "X:10:5")
+    assert code == 2
+    assert "--handwheel 'X:10:5': multiplier '5' is not allowed: 1, 10 or 100" in err
+    assert err.count("\n") == 1
