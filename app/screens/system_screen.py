@@ -20,7 +20,6 @@ from PySide6.QtWidgets import (
     QHeaderView,
     QLabel,
     QPushButton,
-    QScrollArea,
     QStackedWidget,
     QTableWidget,
     QTableWidgetItem,
@@ -58,6 +57,7 @@ from app.screens.widgets.keypad import NumberKeypad
 from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.readouts import set_text, styled_label
 from app.screens.widgets.sim_pendant import SimPendantPanel
+from app.screens.widgets.touch_scroll import touch_scroll_area
 
 GROUP_ORDER = ("home", "tool", "start", "motion", "path", "limits", "jog", "production")
 UNIT_SYMBOLS = {"deg": "°", "deg/s": "°/s", "deg/s²": "°/s²"}
@@ -123,11 +123,7 @@ class SystemScreen(Screen):
         self.param_grid = QGridLayout(self.param_grid_host)
         self.param_grid.setHorizontalSpacing(10)
         self.param_grid.setVerticalSpacing(4)
-        scroll = QScrollArea()
-        scroll.setWidgetResizable(True)
-        scroll.setWidget(self.param_grid_host)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        kinetic_scroll(scroll)
+        scroll = touch_scroll_area(self.param_grid_host)
         self.param_buttons: dict[str, QPushButton] = {}
         self.param_labels: dict[str, tuple[QLabel, QLabel]] = {}
         param_page = QFrame()
@@ -190,13 +186,7 @@ class SystemScreen(Screen):
         self.sim_pendant = SimPendantPanel(self.context.send)
         sim_layout.addWidget(self.sim_pendant)
         sim_layout.addStretch(1)
-        self.sim_scroll = QScrollArea()
-        self.sim_scroll.setWidgetResizable(True)
-        self.sim_scroll.setWidget(sim_content)
-        self.sim_scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        QScroller.grabGesture(
-            self.sim_scroll.viewport(), QScroller.ScrollerGestureType.TouchGesture
-        )
+        self.sim_scroll = touch_scroll_area(sim_content)
         sim_page_layout = QVBoxLayout(sim_page)
         sim_page_layout.setContentsMargins(0, 0, 0, 0)
         sim_page_layout.addWidget(self.sim_scroll)
