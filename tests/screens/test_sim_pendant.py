@@ -10,7 +10,7 @@ from PySide6.QtCore import Qt
 
 from app.machine.snapshot import JogSource, MachineSnapshot
 from app.machine.states import MachineState
-from tests.screens.helpers import enter_pin, find_button, wait_for
+from tests.screens.helpers import enter_pin, find_button, open_pin_pad, wait_for
 
 
 def x_axis(snapshot: MachineSnapshot) -> tuple[float, float]:
@@ -24,7 +24,7 @@ def at_rest(snapshot: MachineSnapshot) -> bool:
 
 
 def test_the_wheel_turned_on_the_page_moves_x_by_count_times_multiplier(qtbot, window, tap) -> None:
-    tap(find_button(window, "userButton"))
+    open_pin_pad(qtbot, window, tap)
     enter_pin(qtbot, window, tap, "1234")  # a technician
     tap(find_button(window, "nav_system"))
     tap(find_button(window, "group_simulation"))
