@@ -5,8 +5,11 @@ let go."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QPushButton
 
 from app.machine.snapshot import JogSource, MachineSnapshot
 from app.machine.states import MachineState
@@ -23,7 +26,15 @@ def at_rest(snapshot: MachineSnapshot) -> bool:
     return snapshot.pendant.jog_source is None
 
 
-def test_the_wheel_turned_on_the_page_moves_x_by_count_times_multiplier(qtbot, window, tap) -> None:
+def test_the_wheel_turned_on_the_page_moves_x_by_count_times_multiplier(
+    qtbot, window, tap: Callable[[QPushButton], None]
+) -> None:
+    def press(name: str) -> None:
+        """Scroll the page to the button, as a finger would, and tap it."""
+        button = find_button(window, name)
+        window.page("system").sim_scroll.ensureWidgetVisible(button)
+        tap(button)
+
     open_pin_pad(qtbot, window, tap)
     enter_pin(qtbot, window, tap, "1234")  # a technician
     tap(find_button(window, "nav_system"))
@@ -33,30 +44,31 @@ def test_the_wheel_turned_on_the_page_moves_x_by_count_times_multiplier(qtbot, w
     assert (
         manual_button.height() >= 60 and find_button(window, "simWheelTurn_plus100").width() >= 60
     )
-    tap(manual_button)
+    press("simManualButton")
     snapshot = wait_for(qtbot, window, lambda s: s.state is MachineState.MANUAL)
-    tap(find_button(window, "simWheelAxis_X"))
-    tap(find_button(window, "simWheelX10"))
+    press("simWheelAxis_X")
+    press("simWheelX10")
     snapshot = wait_for(
         qtbot, window, lambda s: (s.pendant.wheel_axis, s.pendant.wheel_multiplier) == ("X", 10)
     )
     assert find_button(window, "simWheelAxis_X").isChecked()
     x0_command, _ = x_axis(snapshot)
 
-    tap(find_button(window, "simWheelTurn_plus100"))  # not enabled: nothing moves
+    press("simWheelTurn_plus100")  # not enabled: nothing moves
     snapshot = wait_for(qtbot, window, lambda s: s.machine_time_s > snapshot.machine_time_s + 1)
     assert x_axis(snapshot)[0] == x0_command
 
-    tap(find_button(window, "simJogEnable"))
-    tap(find_button(window, "simWheelTurn_plus100"))
+    press("simJogEnable")
+    press("simWheelTurn_plus100")
     wait_for(qtbot, window, lambda s: s.pendant.jog_source is JogSource.HANDWHEEL)
     snapshot = wait_for(qtbot, window, at_rest)
     command, actual = x_axis(snapshot)
     assert command == pytest.approx(x0_command + 1.0, abs=1e-9)  # 100 counts x10 x 0.001 mm
     assert actual == pytest.approx(x0_command + 1.0, abs=0.005)
-    tap(find_button(window, "simWheelAxis_off"))
+    press("simWheelAxis_off")
 
     stick = find_button(window, "simStick_Xminus")
+    window.page("system").sim_scroll.ensureWidgetVisible(stick)
     qtbot.mousePress(stick, Qt.MouseButton.LeftButton)
     wait_for(qtbot, window, lambda s: x_axis(s)[0] < command - 0.5)
     qtbot.mouseRelease(stick, Qt.MouseButton.LeftButton)
