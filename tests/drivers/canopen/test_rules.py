@@ -1,6 +1,7 @@
-"""The pure rules, without a bus (the master's are in tests/drivers/test_cia402_master.py): the
-simulated drive's transition table, the heartbeat watchdog on a simulated clock, bus load,
-EMCY texts, PDO packing, the consumer heartbeat entry and the settings reader."""
+"""The pure rules, without a bus (the master's are in tests/drivers/test_cia402_master.py, the
+simulated drive's transition table in tests/drivers/sim/test_drive_cia402.py): the heartbeat
+watchdog on a simulated clock, bus load, EMCY texts, PDO packing, the consumer heartbeat entry
+and the settings reader."""
 
 from __future__ import annotations
 
@@ -17,31 +18,7 @@ from app.drivers.canopen.motion import _interpolation_period
 from app.drivers.canopen.pdo import answered_sync, pack_drive_command, unpack_drive_feedback
 from app.drivers.canopen.settings import settings_from_config
 from app.drivers.canopen.watchdog import HeartbeatWatchdog
-from app.drivers.cia402 import Cia402State
 from tests.drivers.canopen.conftest import machine_data
-from tests.drivers.canopen.sim_drive import DRIVE_TRANSITIONS, STATE_BITS, _command
-
-S = Cia402State
-SW = STATE_BITS  # a statusword per state
-
-
-# ---- simulated drive's table ------------------------------------------------------------------
-
-
-@pytest.mark.parametrize(("start", "command"), sorted(DRIVE_TRANSITIONS, key=str))
-def test_simulated_drive_rows_decode(start, command):
-    """Every row of the simulated drive's table is reached by a controlword of that command
-    (so the table and the controlword decoding agree)."""
-    words = {
-        "shutdown": 0x06,
-        "switch on": 0x07,
-        "enable operation": 0x0F,
-        "disable voltage": 0x00,
-        "quick stop": 0x02,
-    }
-    assert _command(words[command]) == command
-    assert DRIVE_TRANSITIONS[(start, command)] is not start
-
 
 # ---- heartbeat watchdog ---------------------------------------------------------------------
 
