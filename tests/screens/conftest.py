@@ -16,11 +16,12 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QPushButton, QWidget
+from PySide6.QtWidgets import QApplication, QPushButton, QWidget
 
 from app.data.database import Database
 from app.machine.link import MachineLink
 from app.machine.states import MachineState
+from app.screens.i18n import LanguageManager
 from app.screens.main_window import MainWindow
 from tests.screens.helpers import click, wait_for
 
@@ -34,6 +35,25 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     for item in items:
         if HERE in Path(str(item.fspath)).resolve().parents:
             item.add_marker(pytest.mark.qt_log_ignore(OFFSCREEN_NOISE))
+
+
+def _uninstall_left_translators() -> None:
+    """A window an earlier test closed is only scheduled for deletion (deleteLater, and no
+    event loop runs between tests): its translator stays installed and would translate the
+    texts of the next test, whichever test file ran before on this worker."""
+    if QApplication.instance() is None:
+        return
+    for widget in QApplication.topLevelWidgets():
+        for manager in widget.findChildren(LanguageManager):
+            manager.uninstall()
+
+
+@pytest.fixture(autouse=True)
+def source_language() -> Iterator[None]:
+    """Every screen test starts, and leaves the application, in the source language."""
+    _uninstall_left_translators()
+    yield
+    _uninstall_left_translators()
 
 
 @pytest.fixture(scope="session")

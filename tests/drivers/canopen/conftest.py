@@ -45,7 +45,9 @@ def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
         "heartbeat_ms": 50,
         "heartbeat_timeout_ms": 250,
         "master_heartbeat_timeout_ms": 250,
-        "sdo_timeout_ms": 300,
+        # Far above a healthy answer (~1 ms): a loaded two-core test machine can starve the
+        # simulated nodes' thread for a few hundred ms; the timeout tests set their own.
+        "sdo_timeout_ms": 1000,
         "startup_timeout_ms": 1000,
         "pdo_miss_limit": 25,
         "axes": {
