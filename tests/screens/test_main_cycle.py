@@ -87,7 +87,8 @@ def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, ta
     tap(find_button(window, "stopButton"))
 
 
-def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
+def stop_in_side_a(qtbot, window, database, tap) -> None:
+    """Home, pick the first recipe, Start, put a board in, and tap STOP while side A is cut."""
     home_from_main_screen(qtbot, window, tap)
     recipe_id = database.list_recipes()[0].id
     tap(find_button(window, "recipeList"))
@@ -98,22 +99,17 @@ def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
     tap(find_button(window, "loadBoardButton"))
     wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A")
     tap(find_button(window, "stopButton"))
+
+
+def test_stop_stops_a_running_cycle(qtbot, window, database, tap) -> None:
+    stop_in_side_a(qtbot, window, database, tap)
     wait_for(qtbot, window, lambda s: s.state is not MachineState.AUTOMATIC)
     stopped = wait_for(qtbot, window, lambda s: s.state is not MachineState.STOPPING)
     assert stopped.pieces_shift == 0
 
 
 def test_start_after_a_stop_offers_resume_or_abandon(qtbot, window, database, tap) -> None:
-    home_from_main_screen(qtbot, window, tap)
-    recipe_id = database.list_recipes()[0].id
-    tap(find_button(window, "recipeList"))
-    tap(window.overlay().buttons[0])
-    wait_for(qtbot, window, lambda s: s.recipe_id == recipe_id and not s.allowed.get("Start"))
-    tap(find_button(window, "startButton"))
-    wait_for(qtbot, window, lambda s: s.state is MachineState.AUTOMATIC)
-    tap(find_button(window, "loadBoardButton"))
-    wait_for(qtbot, window, lambda s: s.cycle.step is not None and s.cycle.step.name == "CUTTING_A")
-    tap(find_button(window, "stopButton"))
+    stop_in_side_a(qtbot, window, database, tap)
     stopped = wait_for(qtbot, window, lambda s: s.state is MachineState.READY)
     assert "partly cut" in str(stopped.allowed["Start"])
     assert window.page("main").hint_label.text() == str(stopped.allowed["Start"])
