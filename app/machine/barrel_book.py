@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import logging
+import math
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from datetime import UTC, datetime
@@ -46,6 +47,9 @@ class OpenBarrel:
                 "a_mm": b.section.a_mm,
                 "b_mm": b.section.b_mm,
                 "min_stave_width_mm": b.min_stave_width_mm,
+                "max_stave_width_mm": (
+                    None if math.isinf(b.max_stave_width_mm) else b.max_stave_width_mm
+                ),
                 "staves": [asdict(s) for s in b.staves],
             },
             sort_keys=True,
@@ -58,7 +62,14 @@ class OpenBarrel:
         data: dict[str, Any] = json.loads(text)
         section = BarrelSection(float(data["a_mm"]), float(data["b_mm"]))
         staves = tuple(PlacedStave(**s) for s in data["staves"])
-        barrel = BarrelSet(section, float(data["min_stave_width_mm"]), staves, int(data["number"]))
+        widest = data.get("max_stave_width_mm")  # absent in barrels kept before it existed
+        barrel = BarrelSet(
+            section,
+            float(data["min_stave_width_mm"]),
+            staves,
+            int(data["number"]),
+            max_stave_width_mm=math.inf if widest is None else float(widest),
+        )
         recipe_id = data["recipe_id"]
         return cls(
             barrel,

@@ -28,12 +28,12 @@ def new_barrel(recipe: Recipe, limits: StaveLimits, number: int = 1) -> BarrelSe
     """An empty barrel of the recipe's belly section (None: the recipe has a fixed tilt).
 
     The narrowest stave it accepts is the recipe's narrowest board: a head of the minimum
-    width at the recipe's width ratio."""
+    width at the recipe's width ratio; the widest is the widest board the machine takes."""
     section = recipe.barrel_section
     if section is None:
         return None
     min_width = limits.min_head_width_mm / recipe.width_ratio.value
-    return BarrelSet(section, min_width, (), number)
+    return BarrelSet(section, min_width, (), number, max_stave_width_mm=limits.max_width_mm)
 
 
 def plan_barrel_board(

@@ -84,12 +84,15 @@ class NextStave:
 
 @dataclass(frozen=True)
 class BarrelSet:
-    """One barrel: its belly section, the minimum stave width, the staves done in order."""
+    """One barrel: its belly section, the narrowest and widest stave the machine can cut for
+    it, the staves done in order."""
 
     section: BarrelSection
     min_stave_width_mm: float
     staves: tuple[PlacedStave, ...] = ()
     number: int = 1
+    # The widest board the machine takes: a gap wider than this is no closing stave yet.
+    max_stave_width_mm: float = math.inf
 
     @property
     def end_t_rad(self) -> float:
@@ -125,7 +128,7 @@ class BarrelSet:
         """Where a board of this measured width goes (raises GeometryError for a bad width)."""
         number = len(self.staves) + 1
         start = self.end_t_rad
-        closing = closing_stave(self.section, number, start) if self.staves else None
+        closing = self._closing_stave(number)
         if closing is not None and board_width_mm >= closing.width_mm:
             return self._next(number, Placement.CLOSING, board_width_mm, closing)
         if closing is not None and choice is BoardChoice.CLOSE_NOW:
@@ -146,10 +149,20 @@ class BarrelSet:
     def closing_width_mm(self) -> float | None:
         """The width of the stave that would close the gap now (None: no single stave can,
         or nothing is placed yet); what the operator is asked about before the next board."""
-        if not self.staves or self.closed:
+        if self.closed:
             return None
-        closing = closing_stave(self.section, len(self.staves) + 1, self.end_t_rad)
+        closing = self._closing_stave(len(self.staves) + 1)
         return None if closing is None else closing.width_mm
+
+    def _closing_stave(self, number: int) -> PlacedStave | None:
+        """The stave that closes the gap now, if one board can be it: the gap is a single
+        stave's chord and no wider than the widest board the machine takes."""
+        if not self.staves:
+            return None
+        closing = closing_stave(self.section, number, self.end_t_rad)
+        if closing is None or closing.width_mm > self.max_stave_width_mm:
+            return None
+        return closing
 
     def with_stave(self, next_stave: NextStave) -> BarrelSet:
         """This barrel with the stave just cut added."""

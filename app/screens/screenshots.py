@@ -28,6 +28,7 @@ from app.machine.commands import (
     LeaveManual,
     LoadBoard,
     Reset,
+    Resume,
     SelectHandwheel,
     SelectRecipe,
     SetClamps,
@@ -47,6 +48,7 @@ if TYPE_CHECKING:
 # Messages of the offscreen platform that say nothing about the application.
 OFFSCREEN_NOISE = ("propagateSizeHints",)
 STEP_TIMEOUT_S = 120.0
+CLOSING_BOARDS_MAX = 60  # the smallest sample barrel takes about 15 boards
 
 
 @contextmanager
@@ -130,6 +132,37 @@ def _homed_and_ready(driver: Driver) -> None:
         driver.send_and_wait(
             Home(), lambda s: s.state is MachineState.READY and s.all_homed, "homed"
         )
+
+
+def _cut_until_the_closing_question(driver: Driver) -> None:
+    """Clear the alarm the pictures before left, then cut boards of the barrel already
+    started, Start and a board each, as an operator would, until the panel asks about the
+    closing stave."""
+    driver.window.link.send(Acknowledge(0))
+    driver.window.link.send(ClearFaults())
+    _homed_and_ready(driver)
+    for _ in range(CLOSING_BOARDS_MAX):
+        snapshot = driver.until(lambda s: s.state is MachineState.READY, "ready for a board")
+        if snapshot.barrel is not None and snapshot.barrel.ask_closing:
+            return
+        total = snapshot.pieces_total
+        if "Resume" in snapshot.allowed and snapshot.allowed["Resume"] is None:
+            # The board the fault interrupted: its cut is finished, as the operator would.
+            driver.send_and_wait(
+                Resume(), lambda s: s.state is MachineState.AUTOMATIC, "cut resumed"
+            )
+        else:
+            driver.send_and_wait(
+                Start(), lambda s: s.state is MachineState.AUTOMATIC, "barrel cycle started"
+            )
+            driver.window.link.send(LoadBoard())
+        driver.until(
+            lambda s: s.pieces_total > total and s.state is MachineState.READY,
+            "barrel board finished",
+        )
+    raise TimeoutError(
+        f"screenshots: the barrel did not ask for its closing stave in {CLOSING_BOARDS_MAX} boards"
+    )
 
 
 def render_screenshots(
@@ -288,6 +321,13 @@ def render_screenshots(
             system_page.sim_scroll.ensureWidgetVisible(system_page.sim_pendant)  # type: ignore[attr-defined]
             shoot("system-simulation")
             window.session.logout()
+
+            # The closing stave: boards are cut until one stave can close the barrel, and
+            # the barrel panel asks what the next board becomes.
+            if recipe.barrel_section is not None:
+                _cut_until_the_closing_question(driver)
+                window.show_screen("main")
+                shoot("main-closing-question")
         finally:
             window.poller.stop()
             window.close()

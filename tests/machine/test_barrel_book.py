@@ -4,6 +4,8 @@ database, the barrel being raised survives a restart, and the numbers count on."
 from __future__ import annotations
 
 import itertools
+import json
+import math
 from pathlib import Path
 
 import pytest
@@ -110,3 +112,16 @@ def test_the_machine_carries_on_with_its_barrel_after_a_restart(tmp_path: Path) 
         assert recipe is not None and recipe.name == "Hogshead 300 l"
     finally:
         again.runtime.shutdown()
+
+
+def test_a_barrel_saved_before_the_widest_stave_was_kept_still_restores(
+    store: DatabaseStore,
+) -> None:
+    barrel = new_barrel(OVAL, DEFAULT_LIMITS)
+    assert barrel is not None and barrel.max_stave_width_mm == DEFAULT_LIMITS.max_width_mm
+    saved = json.loads(OpenBarrel(barrel, OVAL.id, OVAL.name, 1.7e9).to_json())
+    del saved["max_stave_width_mm"]
+    store.save_open_barrel(json.dumps(saved))
+    restored = BarrelBook(store, lambda: 1.7e9).restore()
+    assert restored is not None and restored.barrel.max_stave_width_mm == math.inf
+    assert OpenBarrel.from_json(restored.to_json()) == restored

@@ -64,3 +64,20 @@ def test_before_the_first_stave() -> None:
     assert barrel.mean_width_mm is None and barrel.staves_left_estimate() is None
     first = barrel.place(100.0)
     assert first.number == 1 and first.stave.start_t_rad == 0.0
+
+
+def test_a_gap_wider_than_the_widest_board_is_no_closing_stave_yet() -> None:
+    # Round 690 mm barrel after 8 staves of 140 mm: the gap's chord is about 680 mm, a single
+    # chord, but no board is that wide, so the operator is not asked about closing.
+    round_690 = BarrelSection.circle(690.0)
+    barrel = raise_barrel(BarrelSet(round_690, 75.0, max_stave_width_mm=280.0), [140.0] * 8)
+    assert barrel.gap_mm > 280.0
+    assert barrel.closing_width_mm() is None
+    assert barrel.place(140.0, BoardChoice.CLOSE_NOW).placement is Placement.ORDINARY
+    # Without the machine's limit (a barrel kept before the limit was), the same gap asks.
+    assert raise_barrel(BarrelSet(round_690, 75.0), [140.0] * 8).closing_width_mm() is not None
+    # Once the gap fits a board, the question comes, and a wide enough board closes it.
+    nearly = raise_barrel(barrel, [140.0] * 6)
+    closing_mm = nearly.closing_width_mm()
+    assert closing_mm is not None and closing_mm <= 280.0
+    assert nearly.place(closing_mm + 1.0).placement is Placement.CLOSING
