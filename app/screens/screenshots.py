@@ -157,7 +157,7 @@ def _cut_until_the_closing_question(driver: Driver) -> None:
             )
             driver.window.link.send(LoadBoard())
         driver.until(
-            lambda s: s.pieces_total > total and s.state is MachineState.READY,
+            lambda s, before=total: s.pieces_total > before and s.state is MachineState.READY,
             "barrel board finished",
         )
     raise TimeoutError(
