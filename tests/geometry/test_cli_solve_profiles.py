@@ -50,6 +50,8 @@ def test_single_arc_needs_no_length_ratio_and_line_arc_line_does(capsys):
     assert main([*BOARD, "--profile", "single_arc", "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["A"] == 0.0
+    assert main([*BOARD, "--profile", "single_arc", "--length-ratio", "1/4"]) == 0
+    assert "length ratio 0/1, width ratio 3/4" in capsys.readouterr().out  # a given one is unused
     assert main(BOARD) == 2
     assert "--length-ratio is required for the line_arc_line profile" in capsys.readouterr().err
 
