@@ -279,6 +279,31 @@ def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path
         export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
 
 
+def test_drawn_profile_with_concave_dips_as_g2_and_g3(tmp_path: Path) -> None:
+    """A drawn side that turns both ways (two concave dips): its counter-clockwise arcs are G3
+    moves, and rs274's path is the tool path, fixed and in chords; no parametric program."""
+    from dataclasses import replace
+
+    from app.data.dxf_profile import read_dxf_profile
+    from app.data.recipe_profile import RecipeProfile
+    from app.geometry.profile_kinds import ProfileKind
+    from tests.data import dxf_drawings as drawings
+    from tests.geometry.test_cli_solve_profiles import DIPS
+    from tests.programs.conftest import RECIPES
+
+    drawn = read_dxf_profile("dips.dxf", drawings.spline(DIPS))
+    profile = RecipeProfile(ProfileKind.DRAWN, (), drawn.shape, drawn.file_name, drawn.sha256)
+    recipe = replace(RECIPES[1], profile=profile)
+    toolpath = stave_toolpath(recipe, 150.0, PARAMS, LIMITS)
+    moves = _run(tmp_path, export_program(recipe, 150.0, PARAMS, LIMITS, ExportOptions()))
+    assert {m.rotation for m in moves if m.call == "ARC_FEED"} == {-1, 1}
+    compare(toolpath, moves, None)
+    chords = export_program(recipe, 150.0, PARAMS, LIMITS, ExportOptions(chord_error_mm=0.01))
+    compare(toolpath, _run(tmp_path, chords, "chords.ngc"), 0.01)
+    with pytest.raises(GeometryError, match="profile_kind = 'drawn' has no parametric program"):
+        export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
+
+
 def test_two_bevels_each_side_its_own_tilt_offset_and_pivot_shift(tmp_path: Path) -> None:
     """Side A at +alpha_A, side B at -alpha_B (a barrel whose joints differ): the fixed and the
     parametric programs follow the tool path of both bevels."""
