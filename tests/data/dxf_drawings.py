@@ -92,6 +92,22 @@ def bulged_polyline_belly_down() -> bytes:
     return to_bytes(document)
 
 
+def bulged_old_polyline() -> bytes:
+    """The same side as one 2D POLYLINE (the older entity, vertices with bulges), left to
+    right, belly up, on layer SIDE."""
+    document = new_drawing()
+    points = DRAWN.points
+    bulge = _bulge(DRAWN.arc_center_a, points["P2"], points["P3"])
+    vertices = [
+        (*points["P1"], 0.0),
+        (*points["P2"], bulge),
+        (*points["P3"], 0.0),
+        (*points["P4"], 0.0),
+    ]
+    document.modelspace().add_polyline2d(vertices, format="xyb", dxfattribs={"layer": "SIDE"})
+    return to_bytes(document)
+
+
 SPLINE_POINTS: Sequence[Point] = (
     (0.0, 0.0),
     (120.0, 14.0),

@@ -61,6 +61,23 @@ def test_bulged_lwpolyline_drawn_as_the_lower_side_right_to_left():
     check_chain(profile, line_arc_line_on_board)
 
 
+def test_old_style_2d_polyline_with_a_bulge_is_read_like_the_lwpolyline():
+    drawing = read_dxf_profile("side.dxf", drawings.bulged_old_polyline())
+    assert [p.source.split(" #")[0] for p in drawing.shape.primitives] == ["POLYLINE"] * 3
+    assert all("layer SIDE" in p.source for p in drawing.shape.primitives)
+    profile = solve_side_profile(ProfileKind.DRAWN, L, W, K, drawn=drawing.shape)
+    assert isinstance(profile, CurvedProfile)
+    check_chain(profile, line_arc_line_on_board)
+
+
+def test_head_width_under_60_mm_is_refused_for_a_drawing_too():
+    drawing = read_dxf_profile("side.dxf", drawings.spline())
+    with pytest.raises(GeometryError) as refused:
+        solve_side_profile(ProfileKind.DRAWN, L, 70.0, 0.8, drawn=drawing.shape)
+    assert "head_width_mm" in refused.value.fields
+    assert "head width >= 60 mm" in str(refused.value)
+
+
 def test_spline_is_fitted_within_a_micrometre_of_ezdxfs_own_evaluation():
     profile = fitted(drawings.spline())
     reference = BSpline(drawings.SPLINE_POINTS, order=4)
