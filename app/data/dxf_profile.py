@@ -132,6 +132,13 @@ def _primitives(entity: DXFGraphic) -> list[Primitive]:
     raise DxfProfileError(f"{source} is not a curve this product reads")
 
 
+def _ends_with_eof(data: bytes) -> bool:
+    """A complete text DXF ends with the group "0" / "EOF" (a binary one is not checked)."""
+    if data.startswith(b"AutoCAD Binary DXF"):
+        return True
+    return data.rstrip().split()[-1:] == [b"EOF"]
+
+
 def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> DxfProfile:
     """The one side curve of a DXF drawing (of the layer `layer`, if given).
 
@@ -144,6 +151,8 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
             f"{file_name}: {len(data)} bytes is too large for a profile drawing "
             f"(allowed up to {MAX_FILE_BYTES} bytes)"
         )
+    if not data.strip():
+        raise DxfProfileError(f"{file_name}: the file is empty: not a DXF drawing")
     try:
         document, auditor = recover.read(io.BytesIO(data))
     except (DXFError, UnicodeError, ValueError, TypeError, IndexError) as error:
@@ -162,6 +171,11 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
                 primitives += _primitives(entity)
             else:
                 other[where] += 1
+        if not primitives and not other and not _ends_with_eof(data):
+            raise DxfProfileError(
+                "no entity could be read and the file ends without the DXF end marker (EOF): "
+                "it is cut short or damaged"
+            )
         found = tuple(
             f"{count} x {where}" if count > 1 else where for where, count in other.items()
         )

@@ -215,3 +215,13 @@ def test_a_tampered_stored_drawing_is_checked_again():
     spline = DrawnSpline(Nurbs(1, (0.0, 0.0, 1.0, 1.0), ((0.0, 0.0), (1.0, 0.0)), (1.0, 1.0)))
     with pytest.raises(GeometryError, match="no belly"):
         shape_from_dict({"primitives": [spline.to_dict()]})
+
+
+def test_an_empty_or_cut_short_file_says_so():
+    assert "the file is empty" in refusal(b"", "empty.dxf")
+    whole = drawings.spline()
+    cut_short = whole[: whole.index(b"ENTITIES") + 200]
+    assert "ends without the DXF end marker (EOF)" in refusal(cut_short, "cut.dxf")
+    # A complete drawing with nothing drawn in it is not called damaged.
+    message = refusal(drawings.with_entities(lambda space: None), "blank.dxf")
+    assert "no usable curve" in message and "found: nothing" in message
