@@ -48,7 +48,16 @@ MAX_FILE_BYTES = 20 * 1024 * 1024
 
 
 class DxfProfileError(DataError, ValueError):
-    """The file gives no usable profile; the message names the file, the entity, the problem."""
+    """The file gives no usable profile; the message names the file, the entity, the problem.
+
+    ``curve_layers`` names the layers holding curves when the whole drawing (no layer chosen)
+    was refused and there are several: a frame or a second view on its own layer is the usual
+    cause, and choosing the profile's layer is the cure (``stave solve --dxf-layer``, the
+    Recipes screen's layer choice)."""
+
+    def __init__(self, message: str, curve_layers: tuple[str, ...] = ()) -> None:
+        super().__init__(message)
+        self.curve_layers = curve_layers
 
 
 @dataclass(frozen=True)
@@ -162,12 +171,16 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
         raise DxfProfileError(f"{file_name}: the DXF file is damaged ({first})")
     primitives: list[Primitive] = []
     other: Counter[str] = Counter()
+    curve_layers: dict[str, None] = {}  # in drawing order
     try:
         for entity in document.modelspace():
             where = f"{entity.dxftype()} on layer {entity.dxf.layer}"
+            curve = isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline)
+            if curve:
+                curve_layers[str(entity.dxf.layer)] = None
             if layer is not None and entity.dxf.layer != layer:
                 other[where] += 1
-            elif isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline):
+            elif curve:
                 primitives += _primitives(entity)
             else:
                 other[where] += 1
@@ -180,10 +193,7 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
             f"{count} x {where}" if count > 1 else where for where, count in other.items()
         )
         shape = drawn_shape(primitives, found)
-    except DxfProfileError as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
-    except GeometryError as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
-    except (ValueError, DXFError) as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
+    except (DxfProfileError, GeometryError, ValueError, DXFError) as error:
+        layers = tuple(curve_layers) if layer is None and len(curve_layers) > 1 else ()
+        raise DxfProfileError(f"{file_name}: {error}", layers) from None
     return DxfProfile(file_name, hashlib.sha256(data).hexdigest(), shape)

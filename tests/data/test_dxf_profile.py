@@ -114,6 +114,7 @@ def test_a_layer_can_be_chosen_among_several_candidates():
     assert "2 candidate curves" in message
     assert "SPLINE" in message and "layer PROFILE" in message
     assert "LINE" in message and "layer FRAME" in message
+    assert refused.value.curve_layers == ("PROFILE", "FRAME")  # what a chooser offers
     chosen = read_dxf_profile("two.dxf", data, layer="PROFILE")
     assert [p.source.split(" #")[0] for p in chosen.shape.primitives] == ["SPLINE"]
 
@@ -135,6 +136,13 @@ def test_no_usable_curve_names_the_entities_and_layers_found():
     message = refusal(drawings.with_entities(build))
     assert "no usable curve" in message
     assert "CIRCLE on layer HOLES" in message and "TEXT on layer NOTES" in message
+
+
+def test_a_refusal_on_one_layer_offers_no_layers():
+    with pytest.raises(DxfProfileError) as refused:
+        read_dxf_profile("bad.dxf", drawings.with_entities(lambda space: space.add_lwpolyline(
+            [(0, 0), (250, 20), (500, 0)], dxfattribs={"layer": "SIDE"})))  # fmt: skip
+    assert refused.value.curve_layers == ()
 
 
 def test_an_empty_layer_choice_says_what_the_other_layers_hold():

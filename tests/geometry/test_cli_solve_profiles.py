@@ -67,9 +67,22 @@ def test_single_arc_needs_no_length_ratio_and_line_arc_line_does(capsys):
         (["--profile", "superellipse", "--exponent", "1"], "exponent = 1 is out of range"),
         (["--profile", "drawn"], "--profile drawn needs --dxf FILE"),
         (["--dxf", "/nonexistent/side.dxf"], "--dxf /nonexistent/side.dxf: No such file"),
+        (["--dxf", "TWO_LAYERS"], "2 candidate curves (curve 1: LINE #"),
+        (["--dxf", "TWO_LAYERS"], "choose its layer (--dxf-layer: one of SIDE, FRAME)"),
     ],
 )
-def test_bad_profile_options_are_one_line(capsys, options, message):
+def test_bad_profile_options_are_one_line(capsys, tmp_path, options, message):
+    if "TWO_LAYERS" in options:  # the side on SIDE, a frame line on FRAME
+        path = tmp_path / "two layers.dxf"
+        path.write_bytes(
+            drawings.with_entities(
+                lambda space: (
+                    space.add_line((0, 0), (500, 0), dxfattribs={"layer": "SIDE"}),
+                    space.add_line((0, 100), (500, 100), dxfattribs={"layer": "FRAME"}),
+                )
+            )
+        )
+        options = [str(path) if o == "TWO_LAYERS" else o for o in options]
     assert main([*BOARD, *options]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err
