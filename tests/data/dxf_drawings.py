@@ -117,6 +117,21 @@ SPLINE_POINTS: Sequence[Point] = (
 )
 
 
+DIPS_POINTS: Sequence[Point] = (
+    (0.0, 0.0),
+    (200.0, 12.0),
+    (230.0, 2.0),
+    (260.0, 12.0),
+    (500.0, 20.0),
+    (740.0, 12.0),
+    (770.0, 2.0),
+    (800.0, 12.0),
+    (1000.0, 0.0),
+)
+"""A spline with two narrow concave dips between heads and belly (radius about 53 mm on a
+1000 x 150 mm board, k 3/4): its side turns both ways."""
+
+
 def spline(points: Sequence[Point] = SPLINE_POINTS, layer: str = "0") -> bytes:
     document = new_drawing()
     document.modelspace().add_open_spline(points, degree=3, dxfattribs={"layer": layer})

@@ -88,24 +88,11 @@ def test_bad_profile_options_are_one_line(capsys, tmp_path, options, message):
     assert err.count("\n") == 1 and message in err
 
 
-DIPS = (
-    (0, 0),
-    (200, 12),
-    (230, 2),
-    (260, 12),
-    (500, 20),
-    (740, 12),
-    (770, 2),
-    (800, 12),
-    (1000, 0),
-)
-
-
 def test_a_concave_part_tighter_than_the_cutter_is_refused(capsys, tmp_path):
     """Two narrow dips between heads and belly, concave with a radius of about 53 mm: a 40 mm
     cutter follows them, a 56 mm cutter cannot."""
     path = tmp_path / "dips.dxf"
-    path.write_bytes(drawings.spline(DIPS))
+    path.write_bytes(drawings.spline(drawings.DIPS_POINTS))
     assert main([*BOARD, "--dxf", str(path), "--tool-radius", "40", "--json"]) == 0
     capsys.readouterr()
     assert main([*BOARD, "--dxf", str(path), "--tool-radius", "56"]) == 2

@@ -11,7 +11,7 @@ import pytest
 from app.data.recipe import Recipe
 from app.geometry.segments import ArcSegment
 from app.machine.program_export import export_drawing, stave_toolpath
-from tests.programs.conftest import LIMITS, PARAMS
+from tests.programs.conftest import LIMITS, PARAMS, curved_recipes
 
 
 def _arc_ends(arc) -> tuple[tuple[float, float], tuple[float, float]]:
@@ -72,25 +72,6 @@ def test_drawing_has_outline_toolpath_and_points(recipe: Recipe) -> None:
         assert math.dist(labels[name].dxf.insert.vec2, machine(name)) < 1e-9
 
 
-def _curved_recipes() -> list[Recipe]:
-    """A parabola and a drawn spline (with concave dips) on the worked example's recipe."""
-    from dataclasses import replace
-
-    from app.data.dxf_profile import read_dxf_profile
-    from app.data.recipe_profile import RecipeProfile
-    from app.geometry.profile_kinds import ProfileKind
-    from tests.data import dxf_drawings as drawings
-    from tests.geometry.test_cli_solve_profiles import DIPS
-    from tests.programs.conftest import RECIPES
-
-    drawn = read_dxf_profile("dips.dxf", drawings.spline(DIPS))
-    profiles = (
-        RecipeProfile(ProfileKind.PARABOLA),
-        RecipeProfile(ProfileKind.DRAWN, (), drawn.shape, drawn.file_name, drawn.sha256),
-    )
-    return [replace(RECIPES[1], profile=profile) for profile in profiles]
-
-
 def _same_segment(entity, segment) -> None:
     """A LINE or ARC entity is the segment (an arc drawn counter-clockwise in DXF)."""
     if isinstance(segment, ArcSegment):
@@ -107,7 +88,7 @@ def _same_segment(entity, segment) -> None:
 
 @pytest.mark.parametrize("index", [0, 1], ids=["parabola", "drawn"])
 def test_curved_profile_drawing_has_its_fitted_outline_path_and_head_corners(index: int) -> None:
-    recipe = _curved_recipes()[index]
+    recipe = curved_recipes()[index]
     toolpath = stave_toolpath(recipe, 150.0, PARAMS, LIMITS)
     doc = ezdxf.read(io.StringIO(export_drawing(recipe, 150.0, PARAMS, LIMITS)))
     space = doc.modelspace()

@@ -282,18 +282,10 @@ def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path
 def test_drawn_profile_with_concave_dips_as_g2_and_g3(tmp_path: Path) -> None:
     """A drawn side that turns both ways (two concave dips): its counter-clockwise arcs are G3
     moves, and rs274's path is the tool path, fixed and in chords; no parametric program."""
-    from dataclasses import replace
 
-    from app.data.dxf_profile import read_dxf_profile
-    from app.data.recipe_profile import RecipeProfile
-    from app.geometry.profile_kinds import ProfileKind
-    from tests.data import dxf_drawings as drawings
-    from tests.geometry.test_cli_solve_profiles import DIPS
-    from tests.programs.conftest import RECIPES
+    from tests.programs.conftest import curved_recipes
 
-    drawn = read_dxf_profile("dips.dxf", drawings.spline(DIPS))
-    profile = RecipeProfile(ProfileKind.DRAWN, (), drawn.shape, drawn.file_name, drawn.sha256)
-    recipe = replace(RECIPES[1], profile=profile)
+    recipe = curved_recipes()[1]
     toolpath = stave_toolpath(recipe, 150.0, PARAMS, LIMITS)
     moves = _run(tmp_path, export_program(recipe, 150.0, PARAMS, LIMITS, ExportOptions()))
     assert {m.rotation for m in moves if m.call == "ARC_FEED"} == {-1, 1}
