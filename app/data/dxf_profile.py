@@ -141,6 +141,10 @@ def _primitives(entity: DXFGraphic) -> list[Primitive]:
     raise DxfProfileError(f"{source} is not a curve this product reads")
 
 
+def _is_curve(entity: DXFGraphic) -> bool:
+    return isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline)
+
+
 def _ends_with_eof(data: bytes) -> bool:
     """A complete text DXF ends with the group "0" / "EOF" (a binary one is not checked)."""
     if data.startswith(b"AutoCAD Binary DXF"):
@@ -171,16 +175,15 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
         raise DxfProfileError(f"{file_name}: the DXF file is damaged ({first})")
     primitives: list[Primitive] = []
     other: Counter[str] = Counter()
-    curve_layers: dict[str, None] = {}  # in drawing order
+    curve_layers = tuple(  # in drawing order, all of them before any entity is refused
+        dict.fromkeys(str(e.dxf.layer) for e in document.modelspace() if _is_curve(e))
+    )
     try:
         for entity in document.modelspace():
             where = f"{entity.dxftype()} on layer {entity.dxf.layer}"
-            curve = isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline)
-            if curve:
-                curve_layers[str(entity.dxf.layer)] = None
             if layer is not None and entity.dxf.layer != layer:
                 other[where] += 1
-            elif curve:
+            elif _is_curve(entity):
                 primitives += _primitives(entity)
             else:
                 other[where] += 1
@@ -194,6 +197,6 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
         )
         shape = drawn_shape(primitives, found)
     except (DxfProfileError, GeometryError, ValueError, DXFError) as error:
-        layers = tuple(curve_layers) if layer is None and len(curve_layers) > 1 else ()
+        layers = curve_layers if layer is None and len(curve_layers) > 1 else ()
         raise DxfProfileError(f"{file_name}: {error}", layers) from None
     return DxfProfile(file_name, hashlib.sha256(data).hexdigest(), shape)

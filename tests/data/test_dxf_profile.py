@@ -138,6 +138,19 @@ def test_no_usable_curve_names_the_entities_and_layers_found():
     assert "CIRCLE on layer HOLES" in message and "TEXT on layer NOTES" in message
 
 
+def test_an_unreadable_entity_on_another_layer_still_offers_every_layer():
+    def build(space):
+        space.add_polyline3d([(0, 0, 0), (250, 20, 5), (500, 0, 0)], dxfattribs={"layer": "3D"})
+        space.add_open_spline(drawings.SPLINE_POINTS, degree=3, dxfattribs={"layer": "PROFILE"})
+
+    data = drawings.with_entities(build)
+    with pytest.raises(DxfProfileError) as refused:
+        read_dxf_profile("mixed.dxf", data)
+    assert "3D polyline" in str(refused.value)
+    assert refused.value.curve_layers == ("3D", "PROFILE")
+    assert read_dxf_profile("mixed.dxf", data, layer="PROFILE").shape.primitives
+
+
 def test_a_refusal_on_one_layer_offers_no_layers():
     with pytest.raises(DxfProfileError) as refused:
         read_dxf_profile("bad.dxf", drawings.with_entities(lambda space: space.add_lwpolyline(
