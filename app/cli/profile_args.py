@@ -64,7 +64,9 @@ def profile_from_args(args: argparse.Namespace) -> RecipeProfile | None:
         try:
             drawing = read_dxf_profile(args.dxf.name, data, args.dxf_layer)
         except DxfProfileError as exc:
-            raise ProfileOptionError(f"--dxf {exc}") from None
+            layers = ", ".join(exc.curve_layers)
+            hint = f" (--dxf-layer: one of {layers})" if layers else ""
+            raise ProfileOptionError(f"--dxf {exc}{hint}") from None
         return RecipeProfile(
             ProfileKind.DRAWN,
             drawing=drawing.shape,

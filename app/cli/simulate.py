@@ -676,8 +676,14 @@ def _describe(r: CycleReport) -> str:
         return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms)}, then resumed"
     if r.result != "ok":
         return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms) or '(none)'}"
+    # A curved side (a family, a drawing) has no single rise D and radius R.
+    shape = (
+        "a fitted curve (no D, R)"
+        if r.D_mm is None or r.R_mm is None
+        else f"D {r.D_mm:.4f} mm, R {r.R_mm:.2f} mm"
+    )
     return (
-        f"width {r.width_mm:.2f} mm: D {r.D_mm:.4f} mm, R {r.R_mm:.2f} mm, "
+        f"width {r.width_mm:.2f} mm: {shape}, "
         f"cycle {r.cycle_time_s:.2f} s (cut A {r.cut_time_s['A']:.2f} s, "
         f"B {r.cut_time_s['B']:.2f} s), max contour error {r.max_contour_error_mm:.4f} mm"
     )

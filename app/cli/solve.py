@@ -228,13 +228,13 @@ def _solve(args: argparse.Namespace) -> tuple[SideProfile, ToolPath, tuple[str, 
         profile_choice = profile_from_args(args) or LINE_ARC_LINE
     except ProfileOptionError as exc:
         raise CliInputError(str(exc)) from exc
-    if args.length_ratio is None:
-        if profile_choice.spec.uses_length_ratio():
-            raise CliInputError(
-                "--length-ratio is required for the line_arc_line profile: "
-                "allowed a fraction like 1/4 or a decimal"
-            )
-        args.length_ratio = "0"
+    if not profile_choice.spec.uses_length_ratio():
+        args.length_ratio = "0"  # the other kinds have no straight sections: the report says so
+    elif args.length_ratio is None:
+        raise CliInputError(
+            "--length-ratio is required for the line_arc_line profile: "
+            "allowed a fraction like 1/4 or a decimal"
+        )
     process = dict(settings.process)
     if args.tool_radius is not None:
         process["tool_radius_mm"] = _parse_float(

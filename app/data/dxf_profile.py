@@ -48,7 +48,16 @@ MAX_FILE_BYTES = 20 * 1024 * 1024
 
 
 class DxfProfileError(DataError, ValueError):
-    """The file gives no usable profile; the message names the file, the entity, the problem."""
+    """The file gives no usable profile; the message names the file, the entity, the problem.
+
+    ``curve_layers`` names the layers holding curves when the whole drawing (no layer chosen)
+    was refused and there are several: a frame or a second view on its own layer is the usual
+    cause, and choosing the profile's layer is the cure (``stave solve --dxf-layer``, the
+    Recipes screen's layer choice)."""
+
+    def __init__(self, message: str, curve_layers: tuple[str, ...] = ()) -> None:
+        super().__init__(message)
+        self.curve_layers = curve_layers
 
 
 @dataclass(frozen=True)
@@ -132,6 +141,17 @@ def _primitives(entity: DXFGraphic) -> list[Primitive]:
     raise DxfProfileError(f"{source} is not a curve this product reads")
 
 
+def _is_curve(entity: DXFGraphic) -> bool:
+    return isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline)
+
+
+def _ends_with_eof(data: bytes) -> bool:
+    """A complete text DXF ends with the group "0" / "EOF" (a binary one is not checked)."""
+    if data.startswith(b"AutoCAD Binary DXF"):
+        return True
+    return data.rstrip().split()[-1:] == [b"EOF"]
+
+
 def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> DxfProfile:
     """The one side curve of a DXF drawing (of the layer `layer`, if given).
 
@@ -144,6 +164,8 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
             f"{file_name}: {len(data)} bytes is too large for a profile drawing "
             f"(allowed up to {MAX_FILE_BYTES} bytes)"
         )
+    if not data.strip():
+        raise DxfProfileError(f"{file_name}: the file is empty: not a DXF drawing")
     try:
         document, auditor = recover.read(io.BytesIO(data))
     except (DXFError, UnicodeError, ValueError, TypeError, IndexError) as error:
@@ -153,23 +175,28 @@ def read_dxf_profile(file_name: str, data: bytes, layer: str | None = None) -> D
         raise DxfProfileError(f"{file_name}: the DXF file is damaged ({first})")
     primitives: list[Primitive] = []
     other: Counter[str] = Counter()
+    curve_layers = tuple(  # in drawing order, all of them before any entity is refused
+        dict.fromkeys(str(e.dxf.layer) for e in document.modelspace() if _is_curve(e))
+    )
     try:
         for entity in document.modelspace():
             where = f"{entity.dxftype()} on layer {entity.dxf.layer}"
             if layer is not None and entity.dxf.layer != layer:
                 other[where] += 1
-            elif isinstance(entity, Line | Arc | LWPolyline | Polyline | Spline):
+            elif _is_curve(entity):
                 primitives += _primitives(entity)
             else:
                 other[where] += 1
+        if not primitives and not other and not _ends_with_eof(data):
+            raise DxfProfileError(
+                "no entity could be read and the file ends without the DXF end marker (EOF): "
+                "it is cut short or damaged"
+            )
         found = tuple(
             f"{count} x {where}" if count > 1 else where for where, count in other.items()
         )
         shape = drawn_shape(primitives, found)
-    except DxfProfileError as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
-    except GeometryError as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
-    except (ValueError, DXFError) as error:
-        raise DxfProfileError(f"{file_name}: {error}") from None
+    except (DxfProfileError, GeometryError, ValueError, DXFError) as error:
+        layers = curve_layers if layer is None and len(curve_layers) > 1 else ()
+        raise DxfProfileError(f"{file_name}: {error}", layers) from None
     return DxfProfile(file_name, hashlib.sha256(data).hexdigest(), shape)

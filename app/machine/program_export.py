@@ -34,6 +34,9 @@ DEFAULT_SPINDLE_RPM = 18000.0
 WIDTH_STEP_MM = 0.001
 """The parametric program's width range is exact to this (rounded inwards)."""
 _SEARCH_GRID_MM = 5.0
+PARAMETRIC_KINDS = (ProfileKind.LINE_ARC_LINE, ProfileKind.SINGLE_ARC)
+"""The kinds the parametric program computes itself: line-arc-line, and the single arc as
+line-arc-line with no straight sections (length ratio 0)."""
 
 
 class Dialect(Enum):
@@ -125,8 +128,9 @@ def parametric_stave(
 ) -> ParametricStave:
     """The recipe as the parametric program's constants; GeometryError if no width fits."""
 
-    if recipe.profile.kind is not ProfileKind.LINE_ARC_LINE:
-        allowed = f"{ProfileKind.LINE_ARC_LINE.value} (the program solves its cubic itself)"
+    if recipe.profile.kind not in PARAMETRIC_KINDS:
+        kinds = " or ".join(kind.value for kind in PARAMETRIC_KINDS)
+        allowed = f"{kinds} (the program solves its cubic itself)"
         message = (
             f"profile_kind = {recipe.profile.kind.value!r} has no parametric program: "
             f"allowed {allowed}; export a program for one width instead"
@@ -162,7 +166,7 @@ def parametric_stave(
         raise GeometryError([FieldError("tilt_mode", recipe.tilt_mode.value, allowed, message)])
     return ParametricStave(
         length_mm=recipe.length_mm,
-        length_ratio=recipe.length_ratio.value,
+        length_ratio=recipe.length_ratio.value if recipe.profile.spec.uses_length_ratio() else 0.0,
         width_ratio=recipe.width_ratio.value,
         tilt_a_deg=cut.tilts.a_deg,
         tilt_b_deg=cut.tilts.b_deg,

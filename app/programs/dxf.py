@@ -2,10 +2,11 @@
 
 Layers: OUTLINE (the finished stave at table level: both sides and both heads), TOOLPATH_A
 and TOOLPATH_B (the tool centre's cutting moves, leads included), TRAVEL (the non-cutting
-moves), POINTS (P1..P8 as POINT entities with their names as TEXT). Everything in mm, in
-machine coordinates (the profile moved by P0), so the outline and the path line up as on
-the machine. Lines are LINE entities and arcs ARC entities (DXF arcs run counter-clockwise,
-so a clockwise arc is written from its end to its start). Written with ezdxf.
+moves), POINTS (P1..P8 as POINT entities with their names as TEXT; a curved side's head
+corners P1, P4, P5, P8). Everything in mm, in machine coordinates (the profile moved by P0),
+so the outline and the path line up as on the machine. Lines are LINE entities and arcs ARC
+entities (DXF arcs run counter-clockwise, so a clockwise arc is written from its end to its
+start). Written with ezdxf.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from ezdxf.document import Drawing
 from ezdxf.filemanagement import new
 from ezdxf.layouts.layout import Modelspace
 
+from app.geometry.curved_profile import SideProfile
 from app.geometry.profile import StaveProfile
 from app.geometry.segments import ArcSegment, LineSegment, Segment
 from app.geometry.toolpath import ToolPath
@@ -77,6 +79,20 @@ def _outline(toolpath: ToolPath) -> list[Segment]:
     return [*side_a, right, *side_b, left]
 
 
+def named_points(profile: SideProfile) -> dict[str, Point]:
+    """P1..P8 of line-arc-line; a curved side has no tangent points (P2, P3, P6, P7), so only
+    its head corners are named, as line-arc-line names them (P1, P4 on side A; P5, P8 on B)."""
+    if isinstance(profile, StaveProfile):
+        return dict(profile.points)
+    side_a, side_b = profile.edge("A"), profile.edge("B")
+    return {
+        "P1": side_a[0].start,
+        "P4": side_a[-1].end,
+        "P5": side_b[0].start,
+        "P8": side_b[-1].end,
+    }
+
+
 def drawing(toolpath: ToolPath, info: ProgramInfo) -> Drawing:
     """The DXF document of this tool path's stave."""
     doc = new("R2010", setup=False)
@@ -91,8 +107,7 @@ def drawing(toolpath: ToolPath, info: ProgramInfo) -> Drawing:
         layer = f"TOOLPATH_{segment.side}" if segment.cutting else "TRAVEL"
         _add_segment(space, segment, layer)
     x0, y0 = toolpath.params.start_x_mm, toolpath.params.start_y_mm
-    named_points = toolpath.profile.points if isinstance(toolpath.profile, StaveProfile) else {}
-    for name, (x, y) in named_points.items():
+    for name, (x, y) in named_points(toolpath.profile).items():
         space.add_point((x + x0, y + y0), dxfattribs={"layer": "POINTS"})
         label = space.add_text(name, height=POINT_LABEL_HEIGHT_MM, dxfattribs={"layer": "POINTS"})
         label.set_placement((x + x0, y + y0))

@@ -359,8 +359,9 @@ def write_parametric_program(stave: ParametricStave, info: ProgramInfo) -> str:
         ]
     else:
         tilt_line = (
-            "both sides at asin(width / barrel diameter "
-            f"{format_number(stave.barrel_diameter_mm, 1)} mm), side B negative"
+            # No parentheses: they would end a LinuxCNC comment (they came out as "_").
+            "both sides at A = asin of width / barrel diameter "
+            f"{format_number(stave.barrel_diameter_mm, 1)} mm, side B negative"
         )
         tilt = [
             f"#<_tilt_a> = ASIN[#<width> / {exact(stave.barrel_diameter_mm)}]",

@@ -700,14 +700,24 @@ class RecipesScreen(Screen):
         chooser.fileChosen.connect(lambda path: self.import_drawing(Path(path)))
         self.context.open(chooser)
 
-    def import_drawing(self, path: Path) -> None:
-        """Read the drawing into the draft (drawn profile) or say why it cannot be used."""
+    def import_drawing(self, path: Path, layer: str | None = None) -> None:
+        """Read the drawing into the draft (drawn profile) or say why it cannot be used; a
+        drawing refused as a whole with curves on several layers (a frame, a second view)
+        asks which layer holds the side."""
         try:
-            drawing = read_dxf_profile(path.name, path.read_bytes())
+            drawing = read_dxf_profile(path.name, path.read_bytes(), layer)
         except OSError as exc:
             self._message(self.tr("Drawing not imported"), f"{path}: {exc.strerror or exc}")
             return
         except DxfProfileError as exc:
+            if exc.curve_layers:
+                chooser = ChoiceOverlay(
+                    self.tr("Layer of the side profile"),
+                    [(name, name) for name in exc.curve_layers],
+                )
+                chooser.chosen.connect(lambda chosen: self.import_drawing(path, str(chosen)))
+                self.context.open(chooser)
+                return
             self._message(self.tr("Drawing not imported"), str(exc))
             return
         profile = RecipeProfile(

@@ -3036,18 +3036,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+561" />
+        <location line="+571" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-560" />
-        <location line="+610" />
+        <location line="-570" />
+        <location line="+620" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-609" />
+        <location line="-619" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -3084,12 +3084,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+368" />
+        <location line="+378" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-367" />
+        <location line="-377" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -3139,13 +3139,18 @@ shift</translation>
         <translation>Import a side profile (DXF)</translation>
     </message>
     <message>
-        <location line="+13" />
-        <location line="+3" />
+        <location line="+15" />
+        <location line="+11" />
         <source>Drawing not imported</source>
         <translation>Drawing not imported</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="-6" />
+        <source>Layer of the side profile</source>
+        <translation>Layer of the side profile</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>No recipe</source>
         <translation>No recipe</translation>
     </message>
@@ -3603,7 +3608,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231" />
+        <location filename="../../app/screens/system_screen.py" line="+221" />
         <source>System</source>
         <translation>System</translation>
     </message>

@@ -92,6 +92,22 @@ def bulged_polyline_belly_down() -> bytes:
     return to_bytes(document)
 
 
+def bulged_old_polyline() -> bytes:
+    """The same side as one 2D POLYLINE (the older entity, vertices with bulges), left to
+    right, belly up, on layer SIDE."""
+    document = new_drawing()
+    points = DRAWN.points
+    bulge = _bulge(DRAWN.arc_center_a, points["P2"], points["P3"])
+    vertices = [
+        (*points["P1"], 0.0),
+        (*points["P2"], bulge),
+        (*points["P3"], 0.0),
+        (*points["P4"], 0.0),
+    ]
+    document.modelspace().add_polyline2d(vertices, format="xyb", dxfattribs={"layer": "SIDE"})
+    return to_bytes(document)
+
+
 SPLINE_POINTS: Sequence[Point] = (
     (0.0, 0.0),
     (120.0, 14.0),
@@ -99,6 +115,21 @@ SPLINE_POINTS: Sequence[Point] = (
     (380.0, 14.0),
     (500.0, 0.0),
 )
+
+
+DIPS_POINTS: Sequence[Point] = (
+    (0.0, 0.0),
+    (200.0, 12.0),
+    (230.0, 2.0),
+    (260.0, 12.0),
+    (500.0, 20.0),
+    (740.0, 12.0),
+    (770.0, 2.0),
+    (800.0, 12.0),
+    (1000.0, 0.0),
+)
+"""A spline with two narrow concave dips between heads and belly (radius about 53 mm on a
+1000 x 150 mm board, k 3/4): its side turns both ways."""
 
 
 def spline(points: Sequence[Point] = SPLINE_POINTS, layer: str = "0") -> bytes:

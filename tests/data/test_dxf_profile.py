@@ -61,6 +61,23 @@ def test_bulged_lwpolyline_drawn_as_the_lower_side_right_to_left():
     check_chain(profile, line_arc_line_on_board)
 
 
+def test_old_style_2d_polyline_with_a_bulge_is_read_like_the_lwpolyline():
+    drawing = read_dxf_profile("side.dxf", drawings.bulged_old_polyline())
+    assert [p.source.split(" #")[0] for p in drawing.shape.primitives] == ["POLYLINE"] * 3
+    assert all("layer SIDE" in p.source for p in drawing.shape.primitives)
+    profile = solve_side_profile(ProfileKind.DRAWN, L, W, K, drawn=drawing.shape)
+    assert isinstance(profile, CurvedProfile)
+    check_chain(profile, line_arc_line_on_board)
+
+
+def test_head_width_under_60_mm_is_refused_for_a_drawing_too():
+    drawing = read_dxf_profile("side.dxf", drawings.spline())
+    with pytest.raises(GeometryError) as refused:
+        solve_side_profile(ProfileKind.DRAWN, L, 70.0, 0.8, drawn=drawing.shape)
+    assert "head_width_mm" in refused.value.fields
+    assert "head width >= 60 mm" in str(refused.value)
+
+
 def test_spline_is_fitted_within_a_micrometre_of_ezdxfs_own_evaluation():
     profile = fitted(drawings.spline())
     reference = BSpline(drawings.SPLINE_POINTS, order=4)
@@ -97,6 +114,7 @@ def test_a_layer_can_be_chosen_among_several_candidates():
     assert "2 candidate curves" in message
     assert "SPLINE" in message and "layer PROFILE" in message
     assert "LINE" in message and "layer FRAME" in message
+    assert refused.value.curve_layers == ("PROFILE", "FRAME")  # what a chooser offers
     chosen = read_dxf_profile("two.dxf", data, layer="PROFILE")
     assert [p.source.split(" #")[0] for p in chosen.shape.primitives] == ["SPLINE"]
 
@@ -118,6 +136,26 @@ def test_no_usable_curve_names_the_entities_and_layers_found():
     message = refusal(drawings.with_entities(build))
     assert "no usable curve" in message
     assert "CIRCLE on layer HOLES" in message and "TEXT on layer NOTES" in message
+
+
+def test_an_unreadable_entity_on_another_layer_still_offers_every_layer():
+    def build(space):
+        space.add_polyline3d([(0, 0, 0), (250, 20, 5), (500, 0, 0)], dxfattribs={"layer": "3D"})
+        space.add_open_spline(drawings.SPLINE_POINTS, degree=3, dxfattribs={"layer": "PROFILE"})
+
+    data = drawings.with_entities(build)
+    with pytest.raises(DxfProfileError) as refused:
+        read_dxf_profile("mixed.dxf", data)
+    assert "3D polyline" in str(refused.value)
+    assert refused.value.curve_layers == ("3D", "PROFILE")
+    assert read_dxf_profile("mixed.dxf", data, layer="PROFILE").shape.primitives
+
+
+def test_a_refusal_on_one_layer_offers_no_layers():
+    with pytest.raises(DxfProfileError) as refused:
+        read_dxf_profile("bad.dxf", drawings.with_entities(lambda space: space.add_lwpolyline(
+            [(0, 0), (250, 20), (500, 0)], dxfattribs={"layer": "SIDE"})))  # fmt: skip
+    assert refused.value.curve_layers == ()
 
 
 def test_an_empty_layer_choice_says_what_the_other_layers_hold():
@@ -198,3 +236,13 @@ def test_a_tampered_stored_drawing_is_checked_again():
     spline = DrawnSpline(Nurbs(1, (0.0, 0.0, 1.0, 1.0), ((0.0, 0.0), (1.0, 0.0)), (1.0, 1.0)))
     with pytest.raises(GeometryError, match="no belly"):
         shape_from_dict({"primitives": [spline.to_dict()]})
+
+
+def test_an_empty_or_cut_short_file_says_so():
+    assert "the file is empty" in refusal(b"", "empty.dxf")
+    whole = drawings.spline()
+    cut_short = whole[: whole.index(b"ENTITIES") + 200]
+    assert "ends without the DXF end marker (EOF)" in refusal(cut_short, "cut.dxf")
+    # A complete drawing with nothing drawn in it is not called damaged.
+    message = refusal(drawings.with_entities(lambda space: None), "blank.dxf")
+    assert "no usable curve" in message and "found: nothing" in message

@@ -50,6 +50,8 @@ def test_single_arc_needs_no_length_ratio_and_line_arc_line_does(capsys):
     assert main([*BOARD, "--profile", "single_arc", "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["A"] == 0.0
+    assert main([*BOARD, "--profile", "single_arc", "--length-ratio", "1/4"]) == 0
+    assert "length ratio 0/1, width ratio 3/4" in capsys.readouterr().out  # a given one is unused
     assert main(BOARD) == 2
     assert "--length-ratio is required for the line_arc_line profile" in capsys.readouterr().err
 
@@ -65,32 +67,32 @@ def test_single_arc_needs_no_length_ratio_and_line_arc_line_does(capsys):
         (["--profile", "superellipse", "--exponent", "1"], "exponent = 1 is out of range"),
         (["--profile", "drawn"], "--profile drawn needs --dxf FILE"),
         (["--dxf", "/nonexistent/side.dxf"], "--dxf /nonexistent/side.dxf: No such file"),
+        (["--dxf", "TWO_LAYERS"], "2 candidate curves (curve 1: LINE #"),
+        (["--dxf", "TWO_LAYERS"], "choose its layer (--dxf-layer: one of SIDE, FRAME)"),
     ],
 )
-def test_bad_profile_options_are_one_line(capsys, options, message):
+def test_bad_profile_options_are_one_line(capsys, tmp_path, options, message):
+    if "TWO_LAYERS" in options:  # the side on SIDE, a frame line on FRAME
+        path = tmp_path / "two layers.dxf"
+        path.write_bytes(
+            drawings.with_entities(
+                lambda space: (
+                    space.add_line((0, 0), (500, 0), dxfattribs={"layer": "SIDE"}),
+                    space.add_line((0, 100), (500, 100), dxfattribs={"layer": "FRAME"}),
+                )
+            )
+        )
+        options = [str(path) if o == "TWO_LAYERS" else o for o in options]
     assert main([*BOARD, *options]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err
-
-
-DIPS = (
-    (0, 0),
-    (200, 12),
-    (230, 2),
-    (260, 12),
-    (500, 20),
-    (740, 12),
-    (770, 2),
-    (800, 12),
-    (1000, 0),
-)
 
 
 def test_a_concave_part_tighter_than_the_cutter_is_refused(capsys, tmp_path):
     """Two narrow dips between heads and belly, concave with a radius of about 53 mm: a 40 mm
     cutter follows them, a 56 mm cutter cannot."""
     path = tmp_path / "dips.dxf"
-    path.write_bytes(drawings.spline(DIPS))
+    path.write_bytes(drawings.spline(drawings.DIPS_POINTS))
     assert main([*BOARD, "--dxf", str(path), "--tool-radius", "40", "--json"]) == 0
     capsys.readouterr()
     assert main([*BOARD, "--dxf", str(path), "--tool-radius", "56"]) == 2

@@ -74,6 +74,16 @@ def test_json_for_two_cycles_and_a_trace(capsys, tmp_path: Path) -> None:
     assert {r[1] for r in rows[1:]} >= {"homing", "ready", "automatic"}
 
 
+def test_text_report_of_a_curved_profile_has_no_d_and_r(capsys) -> None:
+    """Without --json the cycle's line says a fitted curve has no D and R (it has neither)."""
+    code, out, err = simulate(capsys, "--recipe", BARRIQUE, "--width", "150", "--profile",
+                              "parabola")  # fmt: skip
+    assert code == 0, err
+    (line,) = [text for text in out.splitlines() if text.startswith("width 150.00 mm:")]
+    assert "a fitted curve (no D, R), cycle " in line and "max contour error" in line
+    assert out.splitlines()[-1].startswith("pieces 1, final state ready")
+
+
 def test_injected_fault_ends_in_alarm_and_nothing_restarts(capsys) -> None:
     code, out, _ = simulate(
         capsys,

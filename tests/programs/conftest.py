@@ -7,8 +7,12 @@ from dataclasses import replace
 import pytest
 
 from app.cli.solve import PROCESS_DEFAULTS
+from app.data.dxf_profile import read_dxf_profile
 from app.data.recipe import Recipe, recipe_from_mapping
+from app.data.recipe_profile import RecipeProfile
 from app.geometry.limits import StaveLimits
+from app.geometry.profile_kinds import ProfileKind
+from tests.data import dxf_drawings as drawings
 
 # Lengths 900..3500 mm, length ratios 0..0.45, tilts 3..20 deg, and one barrel recipe.
 RECIPE_ROWS = (
@@ -42,6 +46,16 @@ LIMITS = replace(
     z_min_deg=-25.0,
     z_max_deg=25.0,
 )
+
+
+def curved_recipes() -> list[Recipe]:
+    """A parabola and a drawn spline (with concave dips) on the worked example's recipe."""
+    drawn = read_dxf_profile("dips.dxf", drawings.spline(drawings.DIPS_POINTS))
+    profiles = (
+        RecipeProfile(ProfileKind.PARABOLA),
+        RecipeProfile(ProfileKind.DRAWN, (), drawn.shape, drawn.file_name, drawn.sha256),
+    )
+    return [replace(RECIPES[1], profile=profile) for profile in profiles]
 
 
 @pytest.fixture(params=RECIPES, ids=[r.name for r in RECIPES])

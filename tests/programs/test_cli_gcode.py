@@ -74,6 +74,17 @@ def test_parametric_program(capsys, recipe_file):
     assert "(abort, width outside what this recipe accepts: 80.000 to 280.000 mm)" in out
 
 
+def test_parametric_barrel_program_says_how_the_tilt_is_computed(capsys, tmp_path):
+    path = tmp_path / "barrel.json"
+    path.write_text(json.dumps([recipe_to_mapping(RECIPES[5])]), encoding="utf-8")
+    code, out, err = gcode(capsys, "--recipe-file", str(path), "--parametric")
+    assert code == 0, err
+    assert (
+        "(both sides at A = asin of width / barrel diameter 690.0 mm, side B negative)"
+        in out.splitlines()
+    )
+
+
 def test_recipe_and_parameters_from_the_database(capsys, tmp_path):
     path = tmp_path / "stave.db"
     with Database.open(path) as db:

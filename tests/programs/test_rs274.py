@@ -236,7 +236,27 @@ def test_travel_around_the_board_from_other_home_positions(
             compare(toolpath, _run(tmp_path, _with_width(program, width), "p.ngc"), None)
 
 
-@pytest.mark.parametrize("kind", ["single_arc", "parabola", "ellipse", "superellipse"])
+def test_single_arc_recipe_has_the_parametric_program_of_length_ratio_0(tmp_path: Path) -> None:
+    """A single-arc recipe is line-arc-line without straight sections whatever length ratio the
+    recipe holds: its parametric program cuts the one arc at five widths, as the product does."""
+    from dataclasses import replace
+
+    from app.data.recipe_profile import RecipeProfile
+    from app.geometry.profile_kinds import ProfileKind
+    from tests.programs.conftest import RECIPES
+
+    recipe = replace(RECIPES[2], profile=RecipeProfile(ProfileKind.SINGLE_ARC))
+    assert recipe.length_ratio.value > 0  # kept in the recipe, not used by the single arc
+    program = export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
+    assert "#<_length_ratio> = 0.0" in program.splitlines()
+    for number, exact_width in enumerate(_widths(recipe)):
+        width = round(exact_width, 3)
+        toolpath = stave_toolpath(recipe, width, PARAMS, LIMITS)
+        assert sum(s.cutting and isinstance(s, ArcSegment) for s in toolpath.segments) == 2
+        compare(toolpath, _run(tmp_path, _with_width(program, width), f"w{number}.ngc"), None)
+
+
+@pytest.mark.parametrize("kind", ["parabola", "ellipse", "superellipse"])
 def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path: Path) -> None:
     """Other side profiles are chains of fitted arcs: the fixed program is still exactly the
     tool path (G2/G3 and chords); the parametric program, which solves the line-arc-line
@@ -256,6 +276,23 @@ def test_curved_profiles_as_fixed_programs_and_no_parametric(kind: str, tmp_path
     chords = export_program(recipe, 180.0, PARAMS, LIMITS, ExportOptions(chord_error_mm=0.02))
     compare(toolpath, _run(tmp_path, chords, "chords.ngc"), 0.02)
     with pytest.raises(GeometryError, match=f"profile_kind = '{kind}' has no parametric program"):
+        export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
+
+
+def test_drawn_profile_with_concave_dips_as_g2_and_g3(tmp_path: Path) -> None:
+    """A drawn side that turns both ways (two concave dips): its counter-clockwise arcs are G3
+    moves, and rs274's path is the tool path, fixed and in chords; no parametric program."""
+
+    from tests.programs.conftest import curved_recipes
+
+    recipe = curved_recipes()[1]
+    toolpath = stave_toolpath(recipe, 150.0, PARAMS, LIMITS)
+    moves = _run(tmp_path, export_program(recipe, 150.0, PARAMS, LIMITS, ExportOptions()))
+    assert {m.rotation for m in moves if m.call == "ARC_FEED"} == {-1, 1}
+    compare(toolpath, moves, None)
+    chords = export_program(recipe, 150.0, PARAMS, LIMITS, ExportOptions(chord_error_mm=0.01))
+    compare(toolpath, _run(tmp_path, chords, "chords.ngc"), 0.01)
+    with pytest.raises(GeometryError, match="profile_kind = 'drawn' has no parametric program"):
         export_program(recipe, None, PARAMS, LIMITS, ExportOptions())
 
 

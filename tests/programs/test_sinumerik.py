@@ -14,7 +14,7 @@ from app.data.recipe import Recipe
 from app.geometry.polyline import segment_points
 from app.geometry.segments import ArcSegment
 from app.machine.program_export import Dialect, ExportOptions, export_program, stave_toolpath
-from tests.programs.conftest import LIMITS, PARAMS
+from tests.programs.conftest import LIMITS, PARAMS, curved_recipes
 
 _WORD = re.compile(r"([A-Z])(-?\d+(?:\.\d+)?)")
 
@@ -32,7 +32,17 @@ def _blocks(text: str) -> list[dict[str, float]]:
 
 
 def test_words_and_motion_match_the_tool_path(recipe: Recipe) -> None:
-    width = 160.0
+    _check_blocks(recipe, 160.0)
+
+
+def test_a_drawn_side_turning_both_ways_has_g2_and_g3_blocks() -> None:
+    drawn = curved_recipes()[1]
+    text = _check_blocks(drawn, 150.0)
+    assert {line[:3] for line in text.splitlines() if line.startswith("G")} >= {"G2 ", "G3 "}
+
+
+def _check_blocks(recipe: Recipe, width: float) -> str:
+    """The program's words and every motion block against the tool path; the text back."""
     toolpath = stave_toolpath(recipe, width, PARAMS, LIMITS)
     text = export_program(recipe, width, PARAMS, LIMITS, ExportOptions(dialect=Dialect.SINUMERIK))
     lines = text.splitlines()
@@ -60,6 +70,7 @@ def test_words_and_motion_match_the_tool_path(recipe: Recipe) -> None:
         else:
             assert word == "G0" and block["A"] == pytest.approx(segment.z_end_deg, abs=1e-4)
         position = (block["X"], block["Y"])
+    return text
 
 
 @pytest.mark.parametrize("chords_mm", [None, 0.05])

@@ -87,12 +87,21 @@ def test_a_drawing_imported_through_the_file_chooser(qtbot, window, database, ta
         tap(find_button(chooser, "okButton"))
 
     pick("two curves.dxf")
+    layers = window.overlay()  # a spline on layer 0 and a frame line on FRAME: which one?
+    assert isinstance(layers, ChoiceOverlay)
+    assert [b.text() for b in layers.buttons] == ["0", "FRAME"]
+    tap(layers.buttons[1])
     message = window.overlay()
     assert isinstance(message, MessageOverlay)
-    assert "two curves.dxf: drawn_profile: the drawing has 2 candidate curves" in (
-        message.message_label.text()
-    )
+    assert "two curves.dxf: drawn_profile: the curve has no belly" in (message.message_label.text())
     tap(find_button(message, "okButton"))
+    screen.choose_drawing(tmp_path)
+    chooser = window.overlay()
+    pick("two curves.dxf")
+    tap(window.overlay().buttons[0])
+    assert window.overlay() is None
+    assert screen.draft.profile.file_name == "two curves.dxf"
+    assert [p.source.split(" #")[0] for p in screen.draft.profile.drawing.primitives] == ["SPLINE"]
     screen.choose_drawing(tmp_path)
     chooser = window.overlay()
     pick("house style.dxf")
