@@ -294,12 +294,13 @@ class SimNode:
         self.consumer.heard()
 
     def _on_heartbeat_event(self) -> None:
+        self.on_heartbeat_event()
         with self.lock:
-            self.on_heartbeat_event()
             self.changed.notify_all()
 
     def on_heartbeat_event(self) -> None:
-        """Hook: the watched producer was silent longer than the consumer time."""
+        """Hook: the watched producer was silent longer than the consumer time (on the
+        consumer's thread, no lock held: the hook takes the ones it needs)."""
 
     # ---- SDO ----
     def _on_sdo(self, can_id: int, data: bytearray, timestamp: float) -> None:
