@@ -35,7 +35,7 @@ from app.drivers.cia402 import Cia402State, OperationMode
 from app.drivers.contracts import OutputImage
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.world import SimWorld
-from tests.drivers.canopen.sim_nodes import SimIoNode, SimNetwork, SimNode
+from tests.drivers.canopen.sim_nodes import NodeThread, SimIoNode, SimNetwork, SimNode
 
 _MODES = {int(mode): mode for mode in OperationMode}
 # RPDO1 carries controlword, target, mode; a drive applies the mode first (it decides what
@@ -160,22 +160,21 @@ class WorldBus:
         self.network.close()
 
 
-class _OwnClock:
-    """The thread that runs :meth:`WorldBus.run_while_silent`; joined by ``close``."""
+class _OwnClock(NodeThread):
+    """The thread that runs :meth:`WorldBus.run_while_silent` every
+    :data:`OWN_CLOCK_TICK_S`."""
 
     def __init__(self, bus: WorldBus) -> None:
+        super().__init__()
         self._bus = bus
-        self._stop = threading.Event()
-        self._thread = threading.Thread(target=self._run, name="world own clock", daemon=True)
-        self._thread.start()
+        self.start("world own clock")
 
     def _run(self) -> None:
-        while not self._stop.wait(OWN_CLOCK_TICK_S):
+        while True:
+            with self._cond:
+                if self._cond.wait_for(lambda: self._stopped, OWN_CLOCK_TICK_S):
+                    return
             self._bus.run_while_silent()
-
-    def close(self) -> None:
-        self._stop.set()
-        self._thread.join()
 
 
 class WorldDrive(SimNode):
