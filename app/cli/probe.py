@@ -30,6 +30,7 @@ from app.drivers.contracts import (
     GaugeReading,
     Lifecycle,
     LifecycleState,
+    LinkReporter,
     MachineBackend,
     TimeDriven,
     WidthGauge,
@@ -131,9 +132,8 @@ def _probe(config: MachineConfig, report: dict[str, Any]) -> None:
                     }
                 )
         for name, extra in backend.extras.items():
-            probe_report = getattr(extra, "probe_report", None)
-            if callable(probe_report):
-                report["link"][name] = dict(probe_report())
+            if isinstance(extra, LinkReporter):
+                report["link"][name] = dict(extra.probe_report())
         _cleanup(started)
 
 

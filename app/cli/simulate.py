@@ -43,6 +43,7 @@ from app.cli.simulate_jog import (
 from app.config import ConfigError, MachineConfig, load_config
 from app.data.recipe import Recipe
 from app.drivers.contracts import FAULT_KINDS, FaultInjector
+from app.drivers.sim.world import SimWorld
 from app.geometry.barrel_section import next_joint_t
 from app.machine import commands as cmd
 from app.machine.barrel_job import TOO_NARROW_ALARM
@@ -272,9 +273,9 @@ def _unused_name(recipe: Recipe, controller: MachineController) -> Recipe:
     raise UsageError(f"--recipe-file: no free name for {recipe.name!r}")
 
 
-def _sim_world(runtime: MachineRuntime) -> Any:
+def _sim_world(runtime: MachineRuntime) -> SimWorld:
     world = runtime.backend.extras.get("world")
-    if world is None:
+    if not isinstance(world, SimWorld):
         raise UsageError("stave simulate needs the simulation backend (backend.name = 'sim')")
     return world
 

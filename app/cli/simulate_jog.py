@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from app.drivers.sim.world import SimWorld
 from app.machine import commands as cmd
 from app.machine.runtime import MachineRuntime
 from app.machine.states import MachineState
@@ -132,7 +133,7 @@ def hand_jogs(args: argparse.Namespace, stick_axes: tuple[str, ...]) -> list[Han
 
 def _at_rest(runtime: MachineRuntime) -> bool:
     world = runtime.backend.extras.get("world")
-    wheel = getattr(world, "handwheel", None)
+    wheel = world.handwheel if isinstance(world, SimWorld) else None
     c = runtime.controller
     return (
         (wheel is None or not wheel.turning)

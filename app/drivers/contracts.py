@@ -296,6 +296,14 @@ class FaultInjector(Protocol):
     def clear_injections(self) -> None: ...
 
 
+@runtime_checkable
+class LinkReporter(Protocol):
+    """Implemented by a fieldbus backend's link (found in ``MachineBackend.extras``): what
+    ``stave probe`` prints about it (settings, counters, the state of each node)."""
+
+    def probe_report(self) -> Mapping[str, object]: ...
+
+
 FAULT_KINDS: tuple[str, ...] = (
     "drive_fault",
     "following_error",

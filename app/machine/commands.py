@@ -253,5 +253,30 @@ Command = (
     | Shutdown
 )
 
+ManualCommand = (
+    EnterManual
+    | LeaveManual
+    | JogContinuous
+    | JogStep
+    | MoveTo
+    | JogRelease
+    | SetClamps
+    | SetSpindle
+)
+"""The Manual screen's commands (carried out by ``app.machine.manual_room``)."""
+
+SimulationCommand = (
+    InjectFault
+    | ClearFaults
+    | LoadBoard
+    | RemoveBoard
+    | SelectHandwheel
+    | TurnHandwheel
+    | HoldJogEnable
+    | PushJoystick
+)
+"""The simulation page's commands (carried out by ``app.machine.sim_tools``; refused on any
+backend but the simulation)."""
+
 JOG_REFRESH_S = 0.1  # the screen repeats JogContinuous at least this often
 JOG_DEADMAN_S = 0.3  # no refresh for this long: the machine stops the jog

@@ -13,10 +13,14 @@ runs every period (4 ms) in the machine process:
 4. run the current activity: the automatic cycle, homing, manual jog, or nothing;
 5. write the setpoints and the outputs.
 
-Bookkeeping lives beside it: ``production`` (piece records, counters), ``preview`` (the plan
-the screens draw), ``snapshot_view`` (what the screens see). The controller never sleeps and
-never reads a clock: the runtime hands it ``now_s`` each period, so the same code runs in
-real time on the panel and on a simulated clock in tests.
+The commands are carried out by the layers below, one job each: ``core`` (state, faults,
+Reset), ``cycle_control`` (starting, resuming, abandoning and finishing a cycle),
+``manual_room`` (the Manual screen: jog, move to, clamps, spindle, homing),
+``operator_room`` (Stop, Reset, recipe, parameters, feed override) and ``sim_tools`` (the
+simulation page). Bookkeeping lives beside it: ``production`` (piece records, counters),
+``preview`` (the plan the screens draw), ``snapshot_view`` (what the screens see). The
+controller never sleeps and never reads a clock: the runtime hands it ``now_s`` each period,
+so the same code runs in real time on the panel and on a simulated clock in tests.
 """
 
 from __future__ import annotations
@@ -39,19 +43,13 @@ from app.drivers.contracts import (
 from app.machine import commands as cmd
 from app.machine.alarms import AlarmCode
 from app.machine.cycle import AutomaticCycle, CycleFault, PlanSubmitter, run_now
-from app.machine.cycle_control import CycleControl
-from app.machine.executor import PathExecutor
-from app.machine.homing import HomingFailed, HomingSequence
-from app.machine.homing_clearance import homing_clearance
+from app.machine.homing import HomingFailed
 from app.machine.io_table import io_table
-from app.machine.manual_move import ManualMove
-from app.machine.pendant.jog_sources import PendantJog
-from app.machine.permissions import may, may_start_spindle
-from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
-from app.machine.preview import PlanPublisher
-from app.machine.process_params import jog_speeds, motion_limits, stave_limits
+from app.machine.operator_room import OperatorRoom
+from app.machine.permissions import may
+from app.machine.process_params import jog_speeds
 from app.machine.recipe_on_machine import restore
-from app.machine.refusals import Reason, Refusal, refusal
+from app.machine.refusals import Reason, refusal
 from app.machine.sim_tools import SimulationTools
 from app.machine.snapshot import MachineSnapshot, PlanPreview
 from app.machine.snapshot_view import build_snapshot, state_text
@@ -59,17 +57,14 @@ from app.machine.states import (
     LATCHED_STATES,
     Event,
     MachineState,
-    Mode,
     lamps,
 )
 from app.machine.store import MachineStore, PieceRecord
 
 log = logging.getLogger(__name__)
 
-STOP_LOCKOUT_S = 0.5  # a second Stop within this time is ignored (docs/MACHINE.md section 6)
 
-
-class MachineController(CycleControl):
+class MachineController(OperatorRoom):
     def __init__(
         self,
         config: MachineConfig,
@@ -81,15 +76,11 @@ class MachineController(CycleControl):
         wall_clock: Callable[[], float] = time.time,
         pendant: PendantDevice | None = None,
     ) -> None:
-        super().__init__(config, backend, gauge, store, wall_clock, submit)
-        self.plans = PlanPublisher()
+        super().__init__(config, backend, gauge, store, wall_clock, submit, pendant)
         self.sim_tools = SimulationTools(backend)
-        self.manual_move = ManualMove(config.axes, config.period_s)
-        self.pendant_jog = PendantJog(config, pendant)
         self.io_points = io_table(config)
         self._commands: collections.deque[cmd.Command] = collections.deque()
         self._previous_inputs = InputImage()
-        self._last_stop_s = -1e9
         self._seq = 0
         self.manual.set_speeds(jog_speeds(config, self.params))
         self.production.follow_shifts(self.params)
@@ -102,14 +93,6 @@ class MachineController(CycleControl):
             # Keep the partly cut board clamped: unclamped, it may move and cannot be resumed.
             self.outputs = replace(self.outputs, clamps_close=True)
             self.message = refusal(Reason.INTERRUPTED_BOARD, self.partly_cut.board.describe())
-
-    def power_up(self) -> None:
-        super().power_up()
-        self._publish_recipe_preview()
-
-    def shutdown(self) -> None:
-        super().shutdown()
-        self.pendant_jog.close()
 
     # ---------------------------------------------------------------- commands
     def post(self, command: cmd.Command) -> None:
@@ -136,43 +119,23 @@ class MachineController(CycleControl):
                 self._reset_requested()
             case cmd.Home(axis=axis):
                 self._home(axis)
+            case (
+                cmd.EnterManual()
+                | cmd.LeaveManual()
+                | cmd.JogContinuous()
+                | cmd.JogStep()
+                | cmd.MoveTo()
+                | cmd.JogRelease()
+                | cmd.SetClamps()
+                | cmd.SetSpindle()
+            ):
+                self._handle_manual(command)
             case cmd.SelectRecipe(recipe_id=recipe_id):
                 self._select_recipe(recipe_id)
             case cmd.StartBarrel():
                 self._start_barrel()
             case cmd.ChooseBoard(choice=choice):
                 self.board_choice = choice
-            case cmd.EnterManual():
-                self.mode = Mode.MANUAL
-                self.manual.sync(self.axes)
-                self._transition(Event.ENTER_MANUAL)
-            case cmd.LeaveManual():
-                self.manual.release_all()
-                if self.manual_move.running:  # its setpoints end here: stop the drives now
-                    self.manual_move.abandon()
-                    self.axes.quick_stop_all()
-                self.homing = None
-                self.mode = Mode.AUTOMATIC
-                self.outputs = replace(self.outputs, spindle_on=False)
-                self._transition(Event.LEAVE_MANUAL)
-            case cmd.JogContinuous(axis=axis, direction=direction, hold=hold):
-                if not self._refuse_busy_jog():
-                    self._refuse(self.manual.press(axis, direction, self.now_s, self.axes, hold))
-            case cmd.JogStep(axis=axis, step=step):
-                if not self._refuse_busy_jog():
-                    self._refuse(self.manual.step(axis, step, self.axes))
-            case cmd.MoveTo(x_mm=x, y_mm=y, z_deg=z):
-                self._move_to((x, y, z))
-            case cmd.JogRelease(axis=axis):
-                self.manual.release(axis)
-                self.manual_move.stop()
-            case cmd.SetClamps(closed=closed):
-                self.outputs = replace(self.outputs, clamps_close=closed)
-            case cmd.SetSpindle(on=on):
-                if on and (loose := may_start_spindle(self.facts())):
-                    self._refuse(loose)
-                else:
-                    self.outputs = replace(self.outputs, spindle_on=on)
             case cmd.SetFeedOverride(percent=percent):
                 self._set_feed_override(percent)
             case cmd.Acknowledge(alarm_id=alarm_id):
@@ -181,155 +144,23 @@ class MachineController(CycleControl):
                 self._reload_parameters()
             case cmd.ResetShiftCounter():
                 self.production.reset_shift()
-            case cmd.InjectFault(kind=kind, target=target):
-                self._refuse(self.sim_tools.inject(kind, target))
-            case cmd.ClearFaults():
-                self.sim_tools.clear()
-            case cmd.LoadBoard(width_mm=width_mm):
-                self.sim_tools.replace_board(width_mm)
-            case cmd.RemoveBoard():
-                self.sim_tools.remove_board()
-            case cmd.SelectHandwheel() | cmd.TurnHandwheel() | cmd.HoldJogEnable():
-                self._refuse(self.sim_tools.handwheel(command))
-            case cmd.PushJoystick(x=x, y=y, z=z):
-                self._refuse(self.sim_tools.push_joystick(x, y, z))
+            case (
+                cmd.InjectFault()
+                | cmd.ClearFaults()
+                | cmd.LoadBoard()
+                | cmd.RemoveBoard()
+                | cmd.SelectHandwheel()
+                | cmd.TurnHandwheel()
+                | cmd.HoldJogEnable()
+                | cmd.PushJoystick()
+            ):
+                self._refuse(self.sim_tools.handle(command))
             case cmd.SetUser(name=name):
                 self.user = name
             case cmd.Shutdown():
                 pass  # the runtime ends the loop; nothing to do in the period
             case _:
                 assert_never(command)
-
-    def _move_to(self, target: tuple[float, float, float]) -> None:
-        if self._refuse_busy_jog():
-            return
-        if not self.manual.at_rest or self.manual_move.running:
-            self._refuse(Refusal(Reason.MOVE_RUNNING))
-            return
-        where = (self.manual.position("X"), self.manual.position("Y"), self.manual.position("Z"))
-        limits = motion_limits(self.config, self.params)
-        self._refuse(self.manual_move.start(where, target, self._board_keep_out(), limits))
-
-    def _refuse_busy_jog(self) -> bool:
-        """The screen may jog only while no other control owns the jog (nor a move to a
-        typed position)."""
-        if self.manual_move.running:
-            self._refuse(Refusal(Reason.MOVE_RUNNING))
-            return True
-        busy = self.pendant_jog.touch_screen()
-        self._refuse(busy)
-        return busy is not None
-
-    def _read_pendant(self) -> None:
-        """The handwheel, the joystick and a USB pendant, every period (the wheel's counter
-        is followed in every state, so entering manual mode moves nothing); they jog only in
-        manual mode, not while homing."""
-        jogging = self.state is MachineState.MANUAL and self.homing is None
-        outcome = self.pendant_jog.tick(
-            self.now_s, self.inputs, self.manual, self.axes, jogging_allowed=jogging
-        )
-        if outcome.jump_detail:
-            if jogging:
-                self._fault(AlarmCode.HANDWHEEL_JUMP, "handwheel", outcome.jump_detail)
-            else:  # ignored outside manual mode, and nothing moved: only noted
-                log.warning("handwheel: %s", outcome.jump_detail)
-        for notice in outcome.notices:
-            self._refuse(notice)
-
-    def _home(self, axis: str) -> None:
-        homing = HomingSequence.for_axes(axis, self.config.axes, self.now_s)
-        board = self._board_keep_out()
-        if board is not None:
-            limits = motion_limits(self.config, self.params)
-            try:
-                where = self.axes.positions()
-                axes = tuple(homing.axes_to_home)
-                clearance = homing_clearance(where, board, self.config.axes, limits, axes)
-            except KeepOutRefused as exc:
-                self._refuse(refusal(Reason.HOMING_REFUSED, exc))
-                return
-            if clearance is not None:
-                homing.clearance = PathExecutor(clearance, self.config.period_s)
-                self.message = Refusal(Reason.HOMING_AROUND_BOARD)
-        self.homing = homing
-        if self.state is not MachineState.MANUAL:
-            self._transition(Event.HOME)
-
-    def _board_keep_out(self) -> TableKeepOut | None:
-        """The board on the table (part sensor or clamps) as far as it is known: the widest
-        the table takes, of the recipe's length; and the clamps and the centering device
-        where their sensors say they are. None when nothing is in the way."""
-        board = self.inputs.part_present or self.inputs.clamps_closed
-        devices = self.config.table_devices.in_the_way(
-            board_on_table=board,
-            clamps_closed=self.inputs.clamps_closed,
-            centering_retracted=self.inputs.centering_retracted,
-        )
-        limits = stave_limits(self.config)
-        if not board:
-            return TableKeepOut.devices_only(devices, self.params, limits) if devices else None
-        length = self.recipe.length_mm if self.recipe is not None else None
-        return TableKeepOut.largest_board(self.params, limits, length, devices)
-
-    def _stop(self) -> None:
-        if self.now_s - self._last_stop_s < STOP_LOCKOUT_S:
-            log.info("second Stop within %.1f s ignored", STOP_LOCKOUT_S)
-            return
-        self._last_stop_s = self.now_s
-        if self.state is MachineState.MANUAL:
-            self.manual.release_all()
-            self.manual_move.stop()
-            return
-        if self.state is MachineState.STOPPING:
-            return
-        if self.cycle is not None:
-            self.cycle.request_stop()
-        if self.homing is not None:
-            self.homing = None
-            self.axes.quick_stop_all()
-        self._transition(Event.STOP)
-
-    def _reset_requested(self) -> None:
-        """Reconnect a lost link, then (next period, on fresh feedback) fault-reset the
-        drives; the state unlatches once every cause is gone (see _check_reset)."""
-        if not self.devices.all_up and (failure := self.devices.reconnect()):
-            self._refuse(refusal(Reason.RECONNECT_FAILED, failure))
-        self.pendant_jog.forget()
-        self.reset.request(self.now_s)
-
-    def _select_recipe(self, recipe_id: int) -> None:
-        recipe = self.store.recipe(recipe_id)
-        if recipe is None:
-            self._refuse(refusal(Reason.RECIPE_MISSING, recipe_id))
-            return
-        if self.recipe is None or recipe.id != self.recipe.id:
-            self._drop_barrel()
-        self.recipe = recipe
-        self.store.save_selected_recipe(recipe)
-        self._publish_recipe_preview()
-
-    def _set_feed_override(self, percent: float) -> None:
-        if not 0.0 <= percent <= 120.0:
-            self._refuse(refusal(Reason.FEED_OVERRIDE_RANGE, percent))
-            return
-        self.feed_override_pct = percent
-        if self.cycle is not None:
-            self.cycle.set_override(percent)
-
-    def _reload_parameters(self) -> None:
-        self.params = self.store.parameters()
-        self.manual.set_speeds(jog_speeds(self.config, self.params))
-        self.production.follow_shifts(self.params)
-        # The recipe stays the version selected: a saved recipe reaches the machine only when
-        # someone selects it again (the Recipes screen asks).
-        if self.cycle is None:
-            self._publish_recipe_preview()
-
-    def _publish_recipe_preview(self) -> None:
-        """Show the selected recipe's stave before a board is measured."""
-        if self.recipe is not None:
-            limits = stave_limits(self.config)
-            self.plans.recipe(self.recipe, self.params, limits, self.last_width_mm)
 
     # ---------------------------------------------------------------- the period
     def tick(self, now_s: float) -> None:
@@ -392,20 +223,7 @@ class MachineController(CycleControl):
                 self.homing = None
                 self._transition(Event.HOMING_DONE)
         elif self.state is MachineState.MANUAL:
-            if self.homing is not None:
-                self.homing.tick(self.now_s, self.axes)
-                if self.homing.done:
-                    self.homing = None
-                    self.manual.sync(self.axes)
-            elif self.manual_move.running:
-                if self.manual_move.tick(self.axes):
-                    self.manual.sync(self.axes)
-            elif warning := self.manual.tick(self.now_s, self.config.period_s, self.axes):
-                log.warning("jog %s stopped by its dead-man: no refresh from the screen", warning)
-                self.action_log.stopped(warning)
-                detail = refusal(Reason.JOG_NOT_REFRESHED_DETAIL, warning)
-                self.alarms.raise_alarm(AlarmCode.JOG_NOT_REFRESHED, warning, detail)
-                self.alarms.clear(AlarmCode.JOG_NOT_REFRESHED, warning)
+            self._run_manual()
         elif self.state is MachineState.AUTOMATIC and self.cycle is not None:
             self.outputs = self.cycle.tick(self.now_s, self.inputs, self.outputs, self.axes)
             self.partly_cut.remember(self.cycle, self.axes.positions())

@@ -101,7 +101,7 @@ def test_probe_json(
         "kind": "emergency",
         "device": "Y",
         "code": "0x2310",
-        "text": "drive fault 0x2310",
+        "text": "drive fault 0x2310: Continuous over-current",
     } in report["events"]
 
 

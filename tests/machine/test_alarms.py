@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from app.machine.alarms import ALARM_TRANSITIONS, CATALOGUE, AlarmAction, AlarmManager
+from app.data.pin_guard import LOCKOUT_ALARM_CODE, LOCKOUT_ALARM_TEXT
+from app.machine.alarms import (
+    ALARM_TRANSITIONS,
+    CATALOGUE,
+    AlarmAction,
+    AlarmCode,
+    AlarmManager,
+)
 from app.machine.snapshot import AlarmState
 
 
@@ -77,3 +84,10 @@ def test_full_history_and_one_line_per_source() -> None:
 
 def test_catalogue_codes_are_unique_and_texts_clear() -> None:
     assert all(code == d.code and d.text for code, d in CATALOGUE.items())
+
+
+def test_the_pin_lockout_the_database_records_is_the_catalogued_alarm() -> None:
+    """The data layer records the PIN lockout itself (it may not import the machine layer),
+    so its code and text must be the catalogue's W104."""
+    entry = CATALOGUE[AlarmCode.PIN_LOCKED]
+    assert (entry.code.value, entry.text) == (LOCKOUT_ALARM_CODE, LOCKOUT_ALARM_TEXT)

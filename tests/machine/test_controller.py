@@ -11,7 +11,7 @@ import pytest
 
 from app.data.database import Database
 from app.machine import commands as cmd
-from app.machine.controller import STOP_LOCKOUT_S
+from app.machine.operator_room import STOP_LOCKOUT_S
 from app.machine.snapshot import AlarmState
 from app.machine.states import CycleStep, MachineState
 from tests.machine.conftest import Rig

@@ -35,11 +35,11 @@ import canopen
 from canopen.emcy import EmcyError
 from canopen.objectdictionary import ObjectDictionary
 
-from app.drivers.canopen.emcy_codes import emcy_text
 from app.drivers.canopen.master_heartbeat import MasterHeartbeat
 from app.drivers.canopen.settings import CanopenSettings
 from app.drivers.canopen.watchdog import HeartbeatChange, HeartbeatWatchdog
 from app.drivers.contracts import CommunicationError, DeviceEvent, DeviceEventKind, DriverError
+from app.drivers.emcy import emcy_text
 
 log = logging.getLogger(__name__)
 

@@ -27,7 +27,7 @@ from __future__ import annotations
 import logging
 import math
 import struct
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from app.config import AxisConfig, MachineConfig
@@ -458,16 +458,17 @@ class CanopenMotion(CanopenDevice, MotionBackend):
                 self.device_label, f"unknown axis {name!r}: one of {', '.join(self._axes)}"
             ) from None
 
-    def _request(self, name: str, what: str) -> None:
+    def _request(self, name: str, what: str, request: Callable[[Cia402Master], None]) -> None:
+        """One request of the master that needs an active backend; a refusal names it."""
         axis = self._axis(name)
         self._ensure_active()
         try:
-            getattr(axis.commander, what)()
+            request(axis.commander)
         except RequestRefusedError as exc:
-            raise DriverError(axis.label, f"{what.replace('_', ' ')} refused: {exc}") from exc
+            raise DriverError(axis.label, f"{what} refused: {exc}") from exc
 
     def enable(self, axis: str) -> None:
-        self._request(axis, "enable")
+        self._request(axis, "enable", Cia402Master.enable)
 
     def disable(self, axis: str) -> None:
         self._axis(axis).commander.disable()  # always accepted: the safe direction
@@ -476,11 +477,11 @@ class CanopenMotion(CanopenDevice, MotionBackend):
         self._axis(axis).commander.quick_stop()  # always accepted: the safe direction
 
     def fault_reset(self, axis: str) -> None:
-        self._request(axis, "fault_reset")
+        self._request(axis, "fault reset", Cia402Master.fault_reset)
         self._bus.clear_emcy_code(self._axes[axis].node.node_id)
 
     def start_homing(self, axis: str) -> None:
-        self._request(axis, "start_homing")
+        self._request(axis, "start homing", Cia402Master.start_homing)
         self._homed[axis] = False
 
 

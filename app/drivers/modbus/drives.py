@@ -29,6 +29,7 @@ from app.drivers.contracts import (
     LifecycleState,
     MotionBackend,
 )
+from app.drivers.emcy import emcy_text
 from app.drivers.modbus.bus import DeviceAddress, ModbusBus, TransientError
 from app.drivers.modbus.codec import EncodeError, encode, field_value, put_field
 from app.drivers.modbus.device import BusDevice
@@ -171,7 +172,7 @@ class ModbusMotion(BusDevice, MotionBackend):
                     DeviceEventKind.EMERGENCY,
                     axis.settings.axis,
                     feedback.fault_code,
-                    f"drive fault {feedback.fault_code:#06x}",
+                    fault_text(feedback.fault_code),
                 )
             )
         axis.feedback = feedback
@@ -257,3 +258,11 @@ class ModbusMotion(BusDevice, MotionBackend):
             target.commander.start_homing()
         except RequestRefusedError as exc:
             raise DriverError(axis, f"start homing refused: {exc}") from None
+
+
+def fault_text(fault_code: int) -> str:
+    """The event text of a drive fault: its error code (0x603F) and what the code means; a
+    map without the error code register reports 0."""
+    if not fault_code:
+        return "drive fault"
+    return f"drive fault {fault_code:#06x}: {emcy_text(fault_code)}"

@@ -26,14 +26,13 @@ class EmcyCode(enum.IntEnum):
     HOMING_FAILED = 0xFF03
 
 
-EMCY_TEXT: dict[int, str] = {
-    EmcyCode.CONTINUOUS_OVERCURRENT: "continuous overcurrent (power stage)",
-    EmcyCode.HEARTBEAT: "heartbeat of the master lost",
-    EmcyCode.FOLLOWING_ERROR: "following error",
-    EmcyCode.POSITIVE_LIMIT_SWITCH: "positive limit switch",
-    EmcyCode.NEGATIVE_LIMIT_SWITCH: "negative limit switch",
-    EmcyCode.HOMING_FAILED: "homing failed: home switch not found between the limit switches",
+VENDOR_EMCY_TEXT: dict[int, str] = {
+    EmcyCode.POSITIVE_LIMIT_SWITCH: "Positive limit switch",
+    EmcyCode.NEGATIVE_LIMIT_SWITCH: "Negative limit switch",
+    EmcyCode.HOMING_FAILED: "Homing failed: home switch not found between the limit switches",
 }
+"""The texts of the simulated drive's manufacturer-specific codes (its "manual"); the
+standard codes' texts are :func:`app.drivers.emcy.emcy_text`'s."""
 
 
 class Command(enum.Enum):

@@ -76,10 +76,11 @@ from app.drivers.cia402 import (
     OperationMode,
 )
 from app.drivers.contracts import AxisFeedback
+from app.drivers.emcy import emcy_text
 from app.drivers.sim.cia402 import (
-    EMCY_TEXT,
     STATUSWORD_BASE,
     TRANSITIONS,
+    VENDOR_EMCY_TEXT,
     EmcyCode,
     decode_controlword,
 )
@@ -550,7 +551,7 @@ class SimDrive:
         self._homing_active = False
         self._state = S.FAULT_REACTION_ACTIVE  # transition 13
         if self._link_ok:  # an EMCY sent while the bus is down is lost
-            self._emcy(self.name, int(code), EMCY_TEXT.get(code, "fault"))
+            self._emcy(self.name, int(code), emcy_text(int(code), VENDOR_EMCY_TEXT))
 
     def _start_homing(self) -> None:
         self._homing_active = True

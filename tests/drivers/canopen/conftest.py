@@ -1,5 +1,5 @@
-"""Fixtures: simulated drives and I/O on a virtual CAN channel unique to each test, a machine
-configuration naming that channel, and the backend under test.
+"""Fixtures: the simulated world's drives and I/O on a virtual CAN channel unique to each
+test, a machine configuration naming that channel, and the backend under test.
 
 Real time: the bus is real-time (heartbeats, timeouts), so these tests wait on conditions
 (frames arriving) with short bounds; the heartbeat is 50 ms and its timeout 250 ms, both ways
@@ -12,7 +12,6 @@ import threading
 import time
 import uuid
 from collections.abc import Callable, Iterator, Mapping
-from dataclasses import dataclass
 from typing import Any
 
 import pytest
@@ -23,8 +22,6 @@ from app.drivers.canopen.settings import INPUT_FUNCTIONS, OUTPUT_FUNCTIONS
 from app.drivers.contracts import AxisFeedback, InputImage, MachineBackend, OutputImage
 from app.drivers.sim.settings import SimSettings
 from app.drivers.sim.world import SimWorld
-from tests.drivers.canopen.sim_drive import SimDrive
-from tests.drivers.canopen.sim_nodes import SimIoNode, SimNetwork
 from tests.drivers.canopen.world_nodes import WorldBus
 
 NODE_IDS = {"X": 1, "Y": 2, "Z": 3}
@@ -32,9 +29,6 @@ IO_NODE = 10
 COUNTS = {"X": 1000.0, "Y": 1000.0, "Z": 10000.0}  # per mm, per mm, per degree
 INPUT_BITS = {name: bit for bit, name in enumerate(INPUT_FUNCTIONS)}
 OUTPUT_BITS = {name: bit for bit, name in enumerate(OUTPUT_FUNCTIONS)}
-HEALTHY_INPUTS = sum(
-    1 << INPUT_BITS[n] for n in ("estop_ok", "guard_closed", "centering_retracted", "clamps_open")
-)
 
 
 def canopen_settings(channel: str, **overrides: Any) -> dict[str, Any]:
@@ -90,15 +84,6 @@ def world_bus(
     )
 
 
-@dataclass
-class Bench:
-    """The simulated side of the bus."""
-
-    network: SimNetwork
-    drives: dict[str, SimDrive]
-    io: SimIoNode
-
-
 @pytest.fixture(autouse=True)
 def no_threads_left() -> Iterator[None]:
     """Fail a test that leaves a thread behind (notifier, heartbeat producer, ...)."""
@@ -114,18 +99,6 @@ def no_threads_left() -> Iterator[None]:
 @pytest.fixture
 def channel() -> str:
     return f"stave-test-{uuid.uuid4().hex[:12]}"
-
-
-@pytest.fixture
-def bench(channel: str) -> Iterator[Bench]:
-    network = SimNetwork(channel)
-    drives = {name: SimDrive(network, node) for name, node in NODE_IDS.items()}
-    io = SimIoNode(network, IO_NODE)
-    io.set_inputs(HEALTHY_INPUTS)
-    for node in network.nodes:
-        node.boot()
-    yield Bench(network, drives, io)
-    network.close()
 
 
 @pytest.fixture
@@ -148,13 +121,8 @@ def bus(config: MachineConfig, channel: str) -> Iterator[WorldBus]:
 
 
 @pytest.fixture
-def nodes(request: pytest.FixtureRequest) -> object:
-    """The devices on the bus: the world's (``bus``) unless the test asks for ``bench``."""
-    return request.getfixturevalue("bench" if "bench" in request.fixturenames else "bus")
-
-
-@pytest.fixture
-def backend(config: MachineConfig, nodes: object) -> Iterator[MachineBackend]:
+def backend(config: MachineConfig, bus: WorldBus) -> Iterator[MachineBackend]:
+    """The backend under test, against the nodes of ``bus``."""
     created = create_backend(config)
     yield created
     for device in created.devices():

@@ -54,17 +54,38 @@ ABORT_NOT_MAPPABLE = 0x06040041
 ABORT_PDO_LENGTH = 0x06040042
 
 
-class _HeartbeatProducer:
-    """Sends the node's NMT state every period; joinable, can be silenced by a test."""
+class NodeThread:
+    """A thread of a simulated node: one condition its state and ``close`` share, so that
+    ``close()`` wakes it wherever it waits and joins it before the bus goes away. A subclass
+    sets its state, then calls ``start``; its ``_run`` returns once ``_stopped`` is set."""
+
+    def __init__(self) -> None:
+        self._cond = threading.Condition()
+        self._stopped = False
+
+    def start(self, name: str) -> None:
+        self._thread = threading.Thread(target=self._run, name=name, daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        raise NotImplementedError
+
+    def close(self) -> None:
+        with self._cond:
+            self._stopped = True
+            self._cond.notify_all()
+        self._thread.join()
+
+
+class _HeartbeatProducer(NodeThread):
+    """Sends the node's NMT state every period; can be silenced by a test."""
 
     def __init__(self, send: Callable[[], None]) -> None:
+        super().__init__()
         self._send = send
-        self._cond = threading.Condition()
         self._period_s = 0.0
         self._silenced = False
-        self._stopped = False
-        self._thread = threading.Thread(target=self._run, name="sim heartbeat", daemon=True)
-        self._thread.start()
+        self.start("sim heartbeat")
 
     def set_period_ms(self, period_ms: int) -> None:
         with self._cond:
@@ -75,12 +96,6 @@ class _HeartbeatProducer:
         with self._cond:
             self._silenced = silenced
             self._cond.notify_all()
-
-    def close(self) -> None:
-        with self._cond:
-            self._stopped = True
-            self._cond.notify_all()
-        self._thread.join()
 
     def _run(self) -> None:
         while True:
@@ -97,22 +112,20 @@ class _HeartbeatProducer:
                 self._send()
 
 
-class _HeartbeatConsumer:
-    """Watches one producer's heartbeat (CiA 301 consumer); joinable, its own thread.
+class _HeartbeatConsumer(NodeThread):
+    """Watches one producer's heartbeat (CiA 301 consumer), on its own thread.
 
     Off until configured with a time; then idle until a heartbeat is heard, watching from
     that heartbeat on; a silence longer than the time calls ``on_event`` once (outside this
     object's lock) and makes it idle again until the next heartbeat."""
 
     def __init__(self, on_event: Callable[[], None]) -> None:
+        super().__init__()
         self._on_event = on_event
-        self._cond = threading.Condition()
         self._timeout_s = 0.0  # 0: off
         self._last: float | None = None  # monotonic time of the last heartbeat; None: idle
-        self._stopped = False
         self.events = 0  # heartbeat events so far (for the tests' assertions)
-        self._thread = threading.Thread(target=self._run, name="sim hb consumer", daemon=True)
-        self._thread.start()
+        self.start("sim hb consumer")
 
     def configure(self, timeout_ms: int) -> None:
         with self._cond:
@@ -135,12 +148,6 @@ class _HeartbeatConsumer:
     def wait_events(self, count: int, timeout_s: float) -> bool:
         with self._cond:
             return self._cond.wait_for(lambda: self.events >= count, timeout_s)
-
-    def close(self) -> None:
-        with self._cond:
-            self._stopped = True
-            self._cond.notify_all()
-        self._thread.join()
 
     def _run(self) -> None:
         while True:
@@ -294,12 +301,13 @@ class SimNode:
         self.consumer.heard()
 
     def _on_heartbeat_event(self) -> None:
+        self.on_heartbeat_event()
         with self.lock:
-            self.on_heartbeat_event()
             self.changed.notify_all()
 
     def on_heartbeat_event(self) -> None:
-        """Hook: the watched producer was silent longer than the consumer time."""
+        """Hook: the watched producer was silent longer than the consumer time (on the
+        consumer's thread, no lock held: the hook takes the ones it needs)."""
 
     # ---- SDO ----
     def _on_sdo(self, can_id: int, data: bytearray, timestamp: float) -> None:

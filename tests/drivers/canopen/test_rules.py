@@ -9,7 +9,6 @@ import pytest
 
 from app.config import ConfigError, parse_config
 from app.drivers.canopen.busload import CyclicFrame, bus_load, frame_bits
-from app.drivers.canopen.emcy_codes import emcy_text
 from app.drivers.canopen.master_heartbeat import (
     consumer_heartbeat_entry,
     split_consumer_heartbeat_entry,
@@ -18,6 +17,7 @@ from app.drivers.canopen.motion import _interpolation_period
 from app.drivers.canopen.pdo import answered_sync, pack_drive_command, unpack_drive_feedback
 from app.drivers.canopen.settings import settings_from_config
 from app.drivers.canopen.watchdog import HeartbeatWatchdog
+from app.drivers.emcy import emcy_text
 from tests.drivers.canopen.conftest import machine_data
 
 # ---- heartbeat watchdog ---------------------------------------------------------------------

@@ -12,14 +12,19 @@ backend, and there is no second drive model with its own power state machine.
 
 Time: the X drive is the world's clock: at every SYNC, before any node samples its TPDOs,
 the world advances by one period. While the bus is silent (a lost link, after which the
-backend sends no SYNC) :meth:`WorldBus.follow_clock` lets world time pass so that the
-drives' and the I/O's watchdogs act, as on the machine. A link the world cuts (a comms_loss
-injected) silences its nodes: no PDO, no heartbeat.
+backend sends no SYNC) world time must still pass so that the drives' and the I/O's
+watchdogs and fault reactions act, as on the machine, where every drive runs on its own
+clock. Two ways, for the two kinds of test: :meth:`WorldBus.follow_clock` follows the
+machine runtime's simulated clock (the runtime calls it every tick); with ``own_clock`` a
+thread lets world time follow real time once no SYNC came for :data:`SILENT_AFTER_S`, for
+the tests that drive the backend by hand against the real-time heartbeats. A link the world
+cuts (a comms_loss injected) silences its nodes: no PDO, no heartbeat.
 """
 
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 
@@ -30,7 +35,7 @@ from app.drivers.cia402 import Cia402State, OperationMode
 from app.drivers.contracts import OutputImage
 from app.drivers.sim.drive import SimDrive
 from app.drivers.sim.world import SimWorld
-from tests.drivers.canopen.sim_nodes import SimIoNode, SimNetwork, SimNode
+from tests.drivers.canopen.sim_nodes import NodeThread, SimIoNode, SimNetwork, SimNode
 
 _MODES = {int(mode): mode for mode in OperationMode}
 # RPDO1 carries controlword, target, mode; a drive applies the mode first (it decides what
@@ -39,6 +44,21 @@ _APPLY_ORDER = (obj.MODES_OF_OPERATION, obj.CONTROLWORD, obj.TARGET_POSITION)
 # The homing methods (0x6098) the drives accept; another is refused with an SDO abort.
 SUPPORTED_HOMING_METHODS = frozenset({17, 18, 19, 20, 21, 22, 33, 34, 35, 37})
 ABORT_VALUE_RANGE = 0x06090030
+# Real time without a SYNC after which the drives' own clock runs the world (``own_clock``):
+# well above a period's round trip on a loaded machine, well below the consumer times.
+SILENT_AFTER_S = 0.1
+OWN_CLOCK_TICK_S = 0.01
+# CiA 301 error register (0x1001) bits by the EMCY code's class (its top hex digit): current,
+# voltage, temperature, communication; any other class is manufacturer specific. Bit 0
+# (generic error) is set with every one.
+_REGISTER_BITS = {0x2: 0x02, 0x3: 0x04, 0x4: 0x08, 0x8: 0x10}
+
+
+def error_register(code: int) -> int:
+    """The error register a drive shows (and sends in its EMCY) while ``code`` is active."""
+    if not code:
+        return 0
+    return _REGISTER_BITS.get(code >> 12, 0x80) | 0x01
 
 
 @dataclass
@@ -69,12 +89,15 @@ class WorldBus:
         *,
         without_consumer: Collection[str] = (),
         inverted_inputs: Collection[str] = (),
+        own_clock: bool = False,
     ) -> None:
         """``without_consumer``: drives whose dictionary has no 0x1016 (no heartbeat
-        consumer); ``inverted_inputs``: functions whose terminal reads 0 when they are on."""
+        consumer); ``inverted_inputs``: functions whose terminal reads 0 when they are on;
+        ``own_clock``: world time follows real time while no SYNC comes."""
         self.world = world
         self.lock = threading.RLock()
         self._links = (True, True)  # the drives' and the I/O's link as last seen
+        self._synced = (time.monotonic(), world.time_s)  # real and world time of the last SYNC
         self.network = SimNetwork(channel)
         self.drives = {
             name: WorldDrive(
@@ -90,6 +113,7 @@ class WorldBus:
         self.io = WorldIo(self, io_node, input_bits, output_bits, analog or {}, inverted_inputs)
         for node in self.network.nodes:
             node.boot()
+        self._own_clock = _OwnClock(self) if own_clock else None
 
     def follow_clock(self, time_s: float) -> None:
         """Let world time pass while no SYNC comes (more than two periods behind)."""
@@ -103,7 +127,21 @@ class WorldBus:
         """One SYNC's worth of world time (called by the clock node)."""
         with self.lock:
             self.world.advance(self.world.period_s)
+            self._synced = (time.monotonic(), self.world.time_s)
             self._silence_cut_links()
+
+    def run_while_silent(self) -> None:
+        """One look of the drives' own clock: after :data:`SILENT_AFTER_S` of real time
+        without a SYNC, world time catches up with the real time since the last SYNC; what
+        the drives did meanwhile (a fault reaction ending, an EMCY) shows on the bus."""
+        with self.lock:
+            synced_real_s, synced_world_s = self._synced
+            silent_s = time.monotonic() - synced_real_s
+            if silent_s < SILENT_AFTER_S:
+                return
+            self.follow_clock(synced_world_s + silent_s)
+        for drive in self.drives.values():  # outside the world's lock: see WorldDrive
+            drive.publish()
 
     def _silence_cut_links(self) -> None:
         """Silence the nodes of a link the world cut, and hear them again when it is
@@ -117,7 +155,26 @@ class WorldBus:
         self.io.silence_heartbeat(not links[1])
 
     def close(self) -> None:
+        if self._own_clock is not None:
+            self._own_clock.close()
         self.network.close()
+
+
+class _OwnClock(NodeThread):
+    """The thread that runs :meth:`WorldBus.run_while_silent` every
+    :data:`OWN_CLOCK_TICK_S`."""
+
+    def __init__(self, bus: WorldBus) -> None:
+        super().__init__()
+        self._bus = bus
+        self.start("world own clock")
+
+    def _run(self) -> None:
+        while True:
+            with self._cond:
+                if self._cond.wait_for(lambda: self._stopped, OWN_CLOCK_TICK_S):
+                    return
+            self._bus.run_while_silent()
 
 
 class WorldDrive(SimNode):
@@ -216,23 +273,32 @@ class WorldDrive(SimNode):
             obj.MODES_DISPLAY: int(drive.mode),
             obj.ERROR_CODE: drive.fault_code,
             obj.DIGITAL_INPUTS: inputs,
-            obj.ERROR_REGISTER: 0x01 if drive.fault_code else 0,
+            obj.ERROR_REGISTER: error_register(drive.fault_code),
             obj.CONTROLWORD: drive.controlword,
         }.get(index)
 
     def on_sync(self) -> None:
-        """The drive's EMCY messages since the last SYNC go out on the bus."""
-        log = self.bus.world.emcy_log
-        for record in log[self._emcy_seen :]:
-            if record.device == self.drive.name:
-                self.record.emcy_sent.append(record.code)
-                self.node.emcy.send(record.code, 0x01)
-        self._emcy_seen = len(log)
+        self.publish()
+
+    def publish(self) -> None:
+        """The drive's EMCY messages not sent yet go out on the bus, and whoever waits on
+        this node looks again (the world moved)."""
+        with self.lock:
+            log = self.bus.world.emcy_log
+            for record in log[self._emcy_seen :]:
+                if record.device == self.drive.name:
+                    self.record.emcy_sent.append(record.code)
+                    self.node.emcy.send(record.code, error_register(record.code))
+            self._emcy_seen = len(log)
+            self.changed.notify_all()
 
     def on_heartbeat_event(self) -> None:
-        # No world lock here: the consumer thread holds this node's lock, the bus thread
-        # takes the world's lock first; the drive's reaction is one state change.
-        self.drive.heartbeat_lost()
+        """The drive reacts under the world's lock and its EMCY goes out at once. The two
+        locks are taken one after the other, never one inside the other: a SYNC takes the
+        world's then this node's, a reboot this node's then the world's."""
+        with self.bus.lock:
+            self.drive.heartbeat_lost()
+        self.publish()
 
 
 class WorldIo(SimIoNode):

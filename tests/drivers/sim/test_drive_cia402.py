@@ -133,7 +133,7 @@ def test_fault_then_reset_needs_a_rising_edge_and_ends_switch_on_disabled() -> N
     drive.step(DT)  # a power stage fault removes torque at once: 13 and 14 in one substep
     assert drive.state is S.FAULT and decode_statusword(drive.statusword) is S.FAULT
     assert drive.fault_code == EmcyCode.CONTINUOUS_OVERCURRENT
-    assert emcy == [("X", 0x2310, "continuous overcurrent (power stage)")]
+    assert emcy == [("X", 0x2310, "Continuous over-current")]
     drive.inject_power_stage_fault(False)
     drive.write_controlword(CW_FAULT_RESET)  # the previous word was 0x0F: a rising edge...
     assert drive.state is S.SWITCH_ON_DISABLED  # ...transition 15

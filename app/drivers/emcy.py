@@ -1,12 +1,18 @@
-"""Text of CiA 301 and CiA 402 emergency error codes, for alarms an operator can read.
+"""Text of CiA 301 and CiA 402 emergency error codes, for alarms an operator can read; the
+one table for every backend (a CANopen EMCY, the error code 0x603F a Modbus drive maps, the
+simulated drives).
 
 Why a table of our own: canopen's ``EmcyError.get_desc()`` knows only the dozen classes
 ("Current", "Monitoring"); an operator needs "DC link over-voltage" or "Following error".
 A code not in the table falls back to its class (the code with its low nibble, then its low
-byte, then its low 12 bits cleared), so every code gets some text.
+byte, then its low 12 bits cleared), so every code gets some text. Manufacturer-specific
+codes (0xFF00-0xFFFF) mean what the drive's manual says: a caller that knows the drive passes
+its texts as ``vendor``.
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
 
 EMCY_TEXTS: dict[int, str] = {
     0x0000: "Error reset or no error",
@@ -84,8 +90,11 @@ EMCY_TEXTS: dict[int, str] = {
 }
 
 
-def emcy_text(code: int) -> str:
-    """The operator text of an emergency error code (never empty)."""
+def emcy_text(code: int, vendor: Mapping[int, str] | None = None) -> str:
+    """The operator text of an emergency error code (never empty); ``vendor``: the drive
+    manufacturer's texts of its own codes, looked up first."""
+    if vendor is not None and code in vendor:
+        return vendor[code]
     for mask in (0xFFFF, 0xFFF0, 0xFF00, 0xF000):
         text = EMCY_TEXTS.get(code & mask)
         if text is not None:
