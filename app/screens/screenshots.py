@@ -134,6 +134,11 @@ def _homed_and_ready(driver: Driver) -> None:
         )
 
 
+def _board_done_after(pieces_before: int) -> Callable[[MachineSnapshot], bool]:
+    """The machine is ready again with one more piece counted than ``pieces_before``."""
+    return lambda s: s.pieces_total > pieces_before and s.state is MachineState.READY
+
+
 def _cut_until_the_closing_question(driver: Driver) -> None:
     """Clear the alarm the pictures before left, then cut boards of the barrel already
     started, Start and a board each, as an operator would, until the panel asks about the
@@ -156,10 +161,7 @@ def _cut_until_the_closing_question(driver: Driver) -> None:
                 Start(), lambda s: s.state is MachineState.AUTOMATIC, "barrel cycle started"
             )
             driver.window.link.send(LoadBoard())
-        driver.until(
-            lambda s, before=total: s.pieces_total > before and s.state is MachineState.READY,
-            "barrel board finished",
-        )
+        driver.until(_board_done_after(total), "barrel board finished")
     raise TimeoutError(
         f"screenshots: the barrel did not ask for its closing stave in {CLOSING_BOARDS_MAX} boards"
     )
