@@ -58,3 +58,18 @@ def format_clock(moment: datetime) -> str:
 def format_table_time(moment: datetime) -> str:
     """A local time in a history table: day, month and time (the year is rarely needed)."""
     return moment.astimezone().strftime("%d.%m. %H:%M:%S")
+
+
+def format_time_range(start: datetime, end: datetime) -> str:
+    """A half-open range of local time, [start, end): the end's date only when it differs
+    (a shift that ends the next day), midnight as the day's 24:00."""
+    local_start, local_end = start.astimezone(), end.astimezone()
+    first = local_start.strftime("%d.%m. %H:%M")
+    if local_end.hour == 0 and local_end.minute == 0:
+        last_day = local_end.date().fromordinal(local_end.date().toordinal() - 1)
+        if last_day == local_start.date():
+            return f"{first} – 24:00"
+        return f"{first} – {last_day.strftime('%d.%m.')} 24:00"
+    if local_end.date() == local_start.date():
+        return f"{first} – {local_end.strftime('%H:%M')}"
+    return f"{first} – {local_end.strftime('%d.%m. %H:%M')}"
