@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (
     QGridLayout,
     QHBoxLayout,
     QPushButton,
+    QSizePolicy,
     QVBoxLayout,
     QWidget,
 )
@@ -87,12 +88,12 @@ class ProductionScreen(Screen):
             button.clicked.connect(lambda _=False, c=choice: self.show_range(c))
             self.range_group.addButton(button)
             self.range_buttons[choice] = button
-            header.addWidget(button, 1)
+            header.addWidget(button)
         self.range_buttons[self.choice].setChecked(True)
         header.addSpacing(12)
         self.export_button = touch_button("exportProduction", "range")
         self.export_button.clicked.connect(lambda _=False: self.export())
-        header.addWidget(self.export_button, 1)
+        header.addWidget(self.export_button)
 
         self.range_label = styled_label("", "field", "productionRange")
         self.status_label = styled_label("", "caption", "productionStatus")
@@ -101,8 +102,10 @@ class ProductionScreen(Screen):
         }
         self.rate_label = styled_label("", "value", "piecesPerHour")
         self.alarm_count_label = styled_label("", "value", "alarmCount")
+        # The status may be long (an error): it takes what is left, never the window's width.
+        self.status_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         figures = QHBoxLayout()
-        figures.setSpacing(24)
+        figures.setSpacing(16)
         figures.addWidget(self.range_label)
         for label in (*self.count_labels.values(), self.rate_label, self.alarm_count_label):
             figures.addWidget(label)

@@ -2873,7 +2873,7 @@ shift</translation>
 <context>
     <name>ProductionScreen</name>
     <message>
-        <location filename="../../app/screens/production_screen.py" line="+149" />
+        <location filename="../../app/screens/production_screen.py" line="+152" />
         <source>Production</source>
         <translation>Production</translation>
     </message>

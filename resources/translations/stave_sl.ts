@@ -2873,7 +2873,7 @@ izmena</translation>
 <context>
     <name>ProductionScreen</name>
     <message>
-        <location filename="../../app/screens/production_screen.py" line="+149"/>
+        <location filename="../../app/screens/production_screen.py" line="+152"/>
         <source>Production</source>
         <translation>Proizvodnja</translation>
     </message>
@@ -2940,17 +2940,17 @@ izmena</translation>
     <message>
         <location line="+12"/>
         <source>Good</source>
-        <translation>Dobrih</translation>
+        <translation>Dobri</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Aborted</source>
-        <translation>Prekinjenih</translation>
+        <translation>Prekinjeni</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rejected</source>
-        <translation>Zavrnjenih</translation>
+        <translation>Zavrnjeni</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2960,7 +2960,7 @@ izmena</translation>
     <message>
         <location line="+2"/>
         <source>Alarms %1</source>
-        <translation>Alarmov %1</translation>
+        <translation>Alarmi %1</translation>
     </message>
     <message>
         <location line="+12"/>

@@ -12,16 +12,19 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from PySide6.QtCore import QSize
+from PySide6.QtWidgets import QApplication
 
 from app.data.csv_cells import from_csv_text
 from app.data.database import Database
 from app.data.production_stats import StatsRange
-from app.data.records import AlarmEvent, AlarmState, PieceResult, ProductionRecord
+from app.data.records import AlarmEvent, AlarmState, PieceResult, ProductionRecord, format_utc
 from app.screens.main_window import MainWindow
 from app.screens.production_screen import ProductionScreen
 from app.screens.widgets.dialogs import MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from tests.screens.helpers import find_button
+from tests.screens.test_layout import cut_texts
 
 NOW = datetime(2024, 5, 2, 10, 0).astimezone()  # local time: the 06:00-14:00 shift runs
 SHIFT_START = datetime(2024, 5, 2, 6, 0).astimezone()
@@ -118,7 +121,7 @@ def test_a_range_is_chosen_by_touch(
     wait_read(qtbot, screen)
     assert screen.stats is not None and screen.stats.start == datetime(2024, 5, 2).astimezone()
     assert screen.count_labels[PieceResult.OK].text() == "Good 5"  # the night's one too
-    assert screen.range_label.text() == "02.05. 00:00 – 24:00"
+    assert screen.range_label.text() == "02.05."
     tap(screen.range_buttons[StatsRange.LAST_30_DAYS])
     wait_read(qtbot, screen)
     assert screen.choice is StatsRange.LAST_30_DAYS
@@ -166,3 +169,43 @@ def test_an_export_that_cannot_be_written_says_why(
     overlay = window.overlay()
     assert isinstance(overlay, MessageOverlay)
     assert "not-a-folder" in overlay.message_label.text()
+
+
+@pytest.mark.parametrize("language", ["en", "sl"])
+def test_a_busy_month_fits_the_panel_in_both_languages(
+    qtbot, window: MainWindow, database: Database, language: str
+) -> None:
+    """Four-digit counts, every alarm code and the longest range names: the window keeps
+    1024x768 and no text is cut."""
+    with database._write() as conn:  # a month of records at once (one transaction)
+        conn.executemany(
+            "INSERT INTO production (time, recipe_name, width_mm, cycle_time_s, result) "
+            "VALUES (?, 'Barrique', ?, 25.0, ?)",
+            [
+                (
+                    format_utc(NOW - timedelta(minutes=10 * i + 1)),
+                    120.0 + i % 60,
+                    ("ok", "ok", "ok", "rejected", "aborted")[i % 5],
+                )
+                for i in range(2500)
+            ],
+        )
+        conn.executemany(
+            "INSERT INTO alarm_events (time, code, text, source, from_state, to_state) "
+            "VALUES (?, ?, 'text', 'X', 'normal', 'active_unacked')",
+            [(format_utc(NOW - timedelta(hours=i)), f"E0{i % 60:02d}") for i in range(700)],
+        )
+    window.languages.set_language(language)
+    production = window.page("production")
+    assert isinstance(production, ProductionScreen)
+    production.clock = lambda: NOW
+    window.show_screen("production")
+    production.show_range(StatsRange.LAST_30_DAYS)
+    wait_read(qtbot, production)
+    QApplication.processEvents()
+    assert production.count_labels[PieceResult.OK].text().endswith(" 1500")
+    assert production.count_labels[PieceResult.REJECTED].text().endswith(" 500")
+    assert production.codes_label.text().endswith("+55")
+    assert production.range_label.text() == "03.04. – 02.05."
+    assert window.size() == QSize(1024, 768)
+    assert cut_texts(window) == []

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from datetime import datetime
+from datetime import datetime, timedelta
 
 import numpy as np
 import pyqtgraph as pg
@@ -26,6 +26,8 @@ from app.screens import theme
 TICK_FONT_PX = 15
 """Axis figures: at least 14 px at arm's length, like every text of the panel."""
 HOUR_S = 3600.0
+SMALL_COUNT = 6
+"""Up to this many a bar's axis is labelled 1, 2, 3 (no halves of an alarm)."""
 CYCLE_SYMBOL_PX = 7
 CYCLE_COLOR = theme.GREEN
 BOUND_COLOR = theme.ACCENT
@@ -64,9 +66,27 @@ def width_bars(stats: ProductionStats) -> tuple[np.ndarray, np.ndarray]:
     return edges, heights
 
 
-def _plot(date_axis: bool) -> pg.PlotWidget:
-    axes = {"bottom": pg.DateAxisItem(orientation="bottom")} if date_axis else {}
-    widget = pg.PlotWidget(background="#05070a", axisItems=axes)
+TICK_STEPS_H = (1, 2, 3, 4, 6, 12, 24, 48, 72, 120, 168)
+MAX_TIME_TICKS = 9
+
+
+def time_ticks(start: datetime, end: datetime) -> list[tuple[float, str]]:
+    """Labelled ticks from ``start`` on at a round step of hours (local clock times under a
+    day, local dates above), at most ``MAX_TIME_TICKS``: the ranges start on a shift or a
+    day, so every label is a round time."""
+    span_h = (end - start).total_seconds() / HOUR_S
+    step_h = next((h for h in TICK_STEPS_H if span_h / h <= MAX_TIME_TICKS), TICK_STEPS_H[-1])
+    form = "%H:%M" if step_h < 24 else "%d.%m."
+    ticks: list[tuple[float, str]] = []
+    moment = start
+    while moment <= end:
+        ticks.append((moment.timestamp(), moment.astimezone().strftime(form)))
+        moment += timedelta(hours=step_h)
+    return ticks
+
+
+def _plot() -> pg.PlotWidget:
+    widget = pg.PlotWidget(background="#05070a")
     plot = widget.getPlotItem()
     plot.setMenuEnabled(False)
     plot.hideButtons()
@@ -93,10 +113,10 @@ class ProductionCharts:
     """The four plot widgets (placed by the screen) and their items."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
-        self.pieces = _plot(date_axis=True)
-        self.cycles = _plot(date_axis=True)
-        self.widths = _plot(date_axis=False)
-        self.alarms = _plot(date_axis=True)
+        self.pieces = _plot()
+        self.cycles = _plot()
+        self.widths = _plot()
+        self.alarms = _plot()
         for name, widget in self.widgets().items():
             widget.setObjectName(f"chart_{name}")
             if parent is not None:
@@ -155,8 +175,10 @@ class ProductionCharts:
         self.cycle_item.setData(times, cycle_s)
         self.bound_item.setData(times, bound_s, connect="finite")
         self.updates += 5
+        ticks = time_ticks(stats.start, stats.end)
         for widget in (self.pieces, self.cycles, self.alarms):
             widget.setXRange(start_s, end_s, padding=0.01)
+            widget.getPlotItem().getAxis("bottom").setTicks([ticks, []])
         self._y_from_zero(self.pieces, self.pieces_item)
         self._y_from_zero(self.alarms, self.alarms_item)
         self._y_from_zero(self.widths, self.widths_item)
@@ -168,6 +190,12 @@ class ProductionCharts:
 
     @staticmethod
     def _y_from_zero(widget: pg.PlotWidget, item: pg.PlotDataItem) -> None:
+        """Counts from zero; whole numbers only while the counts are small."""
         _x, y = item.getData()
         top = float(np.max(y)) if y is not None and len(y) else 0.0
         widget.setYRange(0.0, max(top * 1.1, 1.0), padding=0)
+        axis = widget.getPlotItem().getAxis("left")
+        if top <= SMALL_COUNT:
+            axis.setTickSpacing(1.0, 1.0)
+        else:
+            axis.setTickSpacing()
