@@ -11,10 +11,10 @@ hours from UTC, so an hour of UTC is an hour on the wall clock).
 The bound a piece's cycle time is drawn against is the part of its own recorded step times the
 machine cannot shorten: the centering and clamping strokes, the gauge's reading, both sides
 and the repositioning between them (the cuts run at the jerk-limited optimum, see
-``app/machine/cycle_floor.py``). It lies below the machine's floor (the approach and what is
-left of the unclamping stroke are not in it) and needs no plan: the records keep the step
-times, not the plan a floor is computed from. Records from before the step times were kept
-have no bound.
+``app/machine/cycle_floor.py``). With the strokes at their nominal times it lies below the
+machine's floor (the approach and what is left of the unclamping stroke are not in it); it
+needs no plan, because the records keep the step times, not the plan a floor is computed
+from. Records from before the step times were kept have no bound.
 """
 
 from __future__ import annotations
