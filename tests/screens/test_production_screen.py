@@ -19,10 +19,12 @@ from app.data.csv_cells import from_csv_text
 from app.data.database import Database
 from app.data.production_stats import StatsRange
 from app.data.records import AlarmEvent, AlarmState, PieceResult, ProductionRecord, format_utc
+from app.screens.database_jobs import DatabaseJobs
 from app.screens.main_window import MainWindow
 from app.screens.production_screen import ProductionScreen
 from app.screens.widgets.dialogs import MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
+from app.screens.widgets.production_charts import time_ticks
 from tests.screens.helpers import find_button
 from tests.screens.test_layout import cut_texts
 
@@ -209,3 +211,40 @@ def test_a_busy_month_fits_the_panel_in_both_languages(
     assert production.range_label.text() == "03.04. – 02.05."
     assert window.size() == QSize(1024, 768)
     assert cut_texts(window) == []
+
+
+def test_time_ticks_are_round_hours_or_dates() -> None:
+    shift = time_ticks(SHIFT_START, SHIFT_START + timedelta(hours=8))
+    assert [label for _t, label in shift] == [f"{h:02d}:00" for h in range(6, 15)]
+    month_start = datetime(2024, 4, 3).astimezone()
+    month = time_ticks(month_start, month_start + timedelta(days=30))
+    assert [label for _t, label in month] == [
+        "03.04.",
+        "08.04.",
+        "13.04.",
+        "18.04.",
+        "23.04.",
+        "28.04.",
+        "03.05.",
+    ]
+
+
+def test_only_the_newest_request_of_a_kind_is_answered(qtbot, database: Database) -> None:
+    """Tapping ranges quickly: the figures of the last tap are shown, never an older answer
+    that arrives later."""
+    jobs = DatabaseJobs(database.path)
+    answers: list[object] = []
+    for hours in (1, 2, 3):
+        jobs.run(
+            "stats",
+            lambda db, h=hours: (h, len(db.list_production(NOW - timedelta(hours=h), NOW))),
+            lambda result, error: answers.append(result or error),
+        )
+    jobs.run("other", lambda db: "other", lambda result, error: answers.append(result))
+    jobs.wait()
+    qtbot.waitUntil(lambda: len(answers) == 2, timeout=10_000)
+    assert answers == [(3, 0), "other"]
+    jobs.run("stats", lambda db: db.no_such_method(), lambda r, e: answers.append(e))
+    jobs.wait()
+    qtbot.waitUntil(lambda: len(answers) == 3, timeout=10_000)
+    assert "AttributeError" in str(answers[-1])
