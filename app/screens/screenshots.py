@@ -364,6 +364,7 @@ def render_screenshots(
             # Production at a glance: the shift before this one, simulated from this run's
             # board (the screenshot database is a throw-away copy).
             simulate_last_shift(database, datetime.now(UTC))
+            window.clear_notice()  # "logged out" is not part of the picture
             window.show_screen("production")
             production = window.page("production")
             production.show_range(StatsRange.LAST_SHIFT)  # type: ignore[attr-defined]
