@@ -7,7 +7,7 @@ operator wonder which one is right; every screen formats through these.
 from __future__ import annotations
 
 import math
-from datetime import datetime
+from datetime import datetime, time, timedelta
 
 
 def format_number(value: float, decimals: int = 3) -> str:
@@ -58,3 +58,17 @@ def format_clock(moment: datetime) -> str:
 def format_table_time(moment: datetime) -> str:
     """A local time in a history table: day, month and time (the year is rarely needed)."""
     return moment.astimezone().strftime("%d.%m. %H:%M:%S")
+
+
+def format_time_range(start: datetime, end: datetime) -> str:
+    """A half-open range of local time, [start, end): whole days as dates only ("03.04. –
+    02.05."), otherwise times, with the end's date only when it differs (a night shift)."""
+    local_start, local_end = start.astimezone(), end.astimezone()
+    if local_start.time() == local_end.time() == time(0):
+        last_day = local_end.date() - timedelta(days=1)
+        first = local_start.strftime("%d.%m.")
+        return first if last_day == local_start.date() else f"{first} – {last_day:%d.%m.}"
+    first = local_start.strftime("%d.%m. %H:%M")
+    if local_end.date() == local_start.date():
+        return f"{first} – {local_end:%H:%M}"
+    return f"{first} – {local_end:%d.%m. %H:%M}"

@@ -27,6 +27,7 @@ from app.screens.main_screen import MainScreen
 from app.screens.manual_screen import ManualScreen
 from app.screens.pin_check import PinChecker
 from app.screens.poller import SnapshotPoller
+from app.screens.production_screen import ProductionScreen
 from app.screens.recipes_screen import RecipesScreen
 from app.screens.session import Session
 from app.screens.system_screen import SystemScreen
@@ -41,7 +42,7 @@ from app.screens.widgets.overlay import Overlay, top_overlay
 if TYPE_CHECKING:
     from app.data.database import Database
 
-SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms")
+SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms", "production")
 NOTICE_S = 6.0
 OPERATOR_NAME_MAX_CHARS = 32
 EXIT_LEAVE_KIOSK = 64  # packaging/: the kiosk service stays down on this exit status
@@ -116,6 +117,7 @@ class MainWindow(QMainWindow):
             ManualScreen,
             AlarmsScreen,
             IoScreen,
+            ProductionScreen,
         ):
             screen = screen_class(self.context)
             self.screens[screen.key] = screen
@@ -358,6 +360,7 @@ class MainWindow(QMainWindow):
             "system": self.tr("System"),
             "manual": self.tr("Manual"),
             "alarms": self.tr("Alarms"),
+            "production": self.tr("Production"),
         }
         for key, button in self.nav.buttons.items():
             button.setText(titles[key])

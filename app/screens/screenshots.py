@@ -8,16 +8,23 @@ pictures. Nothing is faked in the window. Works offscreen (``QT_QPA_PLATFORM=off
 
 from __future__ import annotations
 
+import random
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from dataclasses import replace
+from datetime import UTC, datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QtMsgType, qInstallMessageHandler
 from PySide6.QtWidgets import QApplication
 
+from app.data.production_stats import StatsRange, range_window
+from app.data.records import AlarmEvent, AlarmState, PieceResult
+from app.data.shifts import ShiftPlan
 from app.data.users import Role
+from app.machine.alarms import AlarmCode
 from app.machine.commands import (
     Acknowledge,
     ClearFaults,
@@ -165,6 +172,71 @@ def _cut_until_the_closing_question(driver: Driver) -> None:
     raise TimeoutError(
         f"screenshots: the barrel did not ask for its closing stave in {CLOSING_BOARDS_MAX} boards"
     )
+
+
+HISTORY_SEED = 21
+"""The simulated shift before this one is the same in every run."""
+
+
+def simulate_last_shift(database: Database, now: datetime) -> int:
+    """Fill the shift before the running one with simulated production for the Production
+    screen's picture: boards fed at an operator's pace (the waits and the breaks vary), each
+    with the step times of the board the machine really cut in this run, some refused for
+    their width (E032), a few aborted by a clamp sensor (E040); returns how many records.
+
+    The screenshot database is a copy that is thrown away; nothing here reaches the panel's."""
+    cut = [r for r in database.list_production(now - timedelta(hours=1), now) if r.step_times_s]
+    if not cut:
+        raise ValueError("screenshots: no board was cut, no step times to simulate with")
+    model = cut[-1]
+    start, end = range_window(
+        StatsRange.LAST_SHIFT, now, ShiftPlan.from_parameters(database.get_parameters())
+    )
+    rng = random.Random(HISTORY_SEED)
+    moment, written = start + timedelta(minutes=5), 0
+    while moment < end - timedelta(minutes=5):
+        if rng.random() < 0.004:  # a break
+            moment += timedelta(minutes=rng.uniform(10, 30))
+        wait_s = rng.choice((0.4, 0.6, 0.9, 1.5, 3.0, 6.0))
+        steps = {**model.step_times_s, "waiting": wait_s}
+        width_mm = round(rng.gauss(150.0, 14.0), 2)
+        result, alarm = PieceResult.OK, None
+        if rng.random() < 0.015:
+            result, alarm, width_mm = PieceResult.REJECTED, AlarmCode.WIDTH_NOT_ALLOWED, 62.4
+            steps = {"waiting": wait_s, "centering": 0.8, "clamping": 0.6, "measuring": 0.3}
+        elif rng.random() < 0.005:
+            result, alarm = PieceResult.ABORTED, AlarmCode.CLAMPS_SENSOR
+            steps = {"waiting": wait_s, "centering": 0.8, "clamping": 3.6}
+        cycle_s = sum(steps.values())
+        moment += timedelta(seconds=cycle_s)
+        database.record_piece(
+            replace(
+                model,
+                id=None,
+                time=moment,
+                width_mm=width_mm,
+                cycle_time_s=cycle_s,
+                result=result,
+                alarm_code=alarm,
+                step_times_s=steps,
+                resumed=False,
+                barrel_number=None,
+                stave_number=None,
+            )
+        )
+        if alarm is not None:
+            database.record_alarm_event(
+                AlarmEvent(
+                    moment,
+                    alarm,
+                    "simulated history",
+                    "machine",
+                    AlarmState.NORMAL,
+                    AlarmState.ACTIVE_UNACKED,
+                )
+            )
+        written += 1
+    return written
 
 
 def render_screenshots(
@@ -323,6 +395,17 @@ def render_screenshots(
             system_page.sim_scroll.ensureWidgetVisible(system_page.sim_pendant)  # type: ignore[attr-defined]
             shoot("system-simulation")
             window.session.logout()
+
+            # Production at a glance: the shift before this one, simulated from this run's
+            # board (the screenshot database is a throw-away copy).
+            simulate_last_shift(database, datetime.now(UTC))
+            window.clear_notice()  # "logged out" is not part of the picture
+            window.show_screen("production")
+            production = window.page("production")
+            production.show_range(StatsRange.LAST_SHIFT)  # type: ignore[attr-defined]
+            production.jobs.wait()  # type: ignore[attr-defined]
+            driver.settle()
+            shoot("production")
 
             # The closing stave: boards are cut until one stave can close the barrel, and
             # the barrel panel asks what the next board becomes.

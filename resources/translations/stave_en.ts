@@ -2182,7 +2182,7 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+183" />
+        <location filename="../../app/screens/main_window.py" line="+185" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
@@ -2211,13 +2211,13 @@ shift</translation>
     </message>
     <message>
         <location line="-11" />
-        <location line="+183" />
+        <location line="+184" />
         <location line="+2" />
         <source>Leave the kiosk</source>
         <translation>Leave the kiosk</translation>
     </message>
     <message>
-        <location line="-177" />
+        <location line="-178" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
     </message>
@@ -2283,12 +2283,12 @@ shift</translation>
     </message>
     <message>
         <location line="+20" />
-        <location line="+22" />
+        <location line="+23" />
         <source>Language</source>
         <translation>Language</translation>
     </message>
     <message>
-        <location line="-10" />
+        <location line="-11" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2308,7 +2308,12 @@ shift</translation>
         <translation>Manual</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+2" />
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <location line="+57" />
         <location line="+2" />
         <source>Shut down</source>
@@ -2863,6 +2868,129 @@ shift</translation>
         <location line="+38" />
         <source>Enter your PIN.</source>
         <translation>Enter your PIN.</translation>
+    </message>
+</context>
+<context>
+    <name>ProductionScreen</name>
+    <message>
+        <location filename="../../app/screens/production_screen.py" line="+152" />
+        <source>Production</source>
+        <translation>Production</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>This shift</source>
+        <translation>This shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Last shift</source>
+        <translation>Last shift</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Today</source>
+        <translation>Today</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>7 days</source>
+        <translation>7 days</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>30 days</source>
+        <translation>30 days</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Export CSV…</source>
+        <translation>Export CSV…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Staves per hour</source>
+        <translation>Staves per hour</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Cycle time per stave, s:</source>
+        <translation>Cycle time per stave, s:</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cycle</source>
+        <translation>cycle</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>bound</source>
+        <translation>bound</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Board widths, mm</source>
+        <translation>Board widths, mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Alarms per hour</source>
+        <translation>Alarms per hour</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Good</source>
+        <translation>Good</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Aborted</source>
+        <translation>Aborted</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Rejected</source>
+        <translation>Rejected</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 per hour</source>
+        <translation>%1 per hour</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Alarms %1</source>
+        <translation>Alarms %1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Reading…</source>
+        <translation>Reading…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Nothing produced in this range.</source>
+        <translation>Nothing produced in this range.</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>Not read: %1</source>
+        <translation>Not read: %1</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Export production</source>
+        <translation>Export production</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Export failed</source>
+        <translation>Export failed</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 production records written to %2.</source>
+        <translation>%1 production records written to %2.</translation>
     </message>
 </context>
 <context>

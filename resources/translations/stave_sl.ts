@@ -2182,7 +2182,7 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+183"/>
+        <location filename="../../app/screens/main_window.py" line="+185"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
@@ -2211,13 +2211,13 @@ izmena</translation>
     </message>
     <message>
         <location line="-11"/>
-        <location line="+183"/>
+        <location line="+184"/>
         <location line="+2"/>
         <source>Leave the kiosk</source>
         <translation>Zapusti kiosk</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-178"/>
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Odjavim uporabnika %1 in se vrnem na raven operaterja?</translation>
     </message>
@@ -2283,12 +2283,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+20"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Language</source>
         <translation>Jezik</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-11"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2308,7 +2308,12 @@ izmena</translation>
         <translation>Ročno</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>Production</source>
+        <translation>Proizvodnja</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <location line="+57"/>
         <location line="+2"/>
         <source>Shut down</source>
@@ -2863,6 +2868,129 @@ izmena</translation>
         <location line="+38"/>
         <source>Enter your PIN.</source>
         <translation>Vnesite PIN.</translation>
+    </message>
+</context>
+<context>
+    <name>ProductionScreen</name>
+    <message>
+        <location filename="../../app/screens/production_screen.py" line="+152"/>
+        <source>Production</source>
+        <translation>Proizvodnja</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>This shift</source>
+        <translation>Ta izmena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Last shift</source>
+        <translation>Prejšnja izmena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Today</source>
+        <translation>Danes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>7 days</source>
+        <translation>7 dni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>30 days</source>
+        <translation>30 dni</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export CSV…</source>
+        <translation>Izvoz CSV…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Staves per hour</source>
+        <translation>Dog na uro</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cycle time per stave, s:</source>
+        <translation>Čas cikla na dogo, s:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cycle</source>
+        <translation>cikel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bound</source>
+        <translation>meja</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Board widths, mm</source>
+        <translation>Širine desk, mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alarms per hour</source>
+        <translation>Alarmi na uro</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Good</source>
+        <translation>Dobri</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aborted</source>
+        <translation>Prekinjeni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rejected</source>
+        <translation>Zavrnjeni</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 per hour</source>
+        <translation>%1 na uro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Alarms %1</source>
+        <translation>Alarmi %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Reading…</source>
+        <translation>Berem…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing produced in this range.</source>
+        <translation>V tem obdobju ni proizvodnje.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Not read: %1</source>
+        <translation>Ni prebrano: %1</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Export production</source>
+        <translation>Izvoz proizvodnje</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Export failed</source>
+        <translation>Izvoz ni uspel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 production records written to %2.</source>
+        <translation>%1 zapisov proizvodnje zapisanih v %2.</translation>
     </message>
 </context>
 <context>

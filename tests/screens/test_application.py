@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from datetime import UTC, datetime, timedelta
+
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from PySide6.QtGui import QImage
 
+from app.data.records import PieceResult
 from app.screens.application import create_main_window
 from app.screens.main_window import SCREEN_KEYS, MainWindow
 from app.screens.poller import REFRESH_HZ
@@ -60,7 +63,8 @@ def test_screenshots_of_every_screen_in_a_realistic_state(
         "11-system-limits.png",
         "12-alarm-detail.png",
         "13-system-simulation.png",
-        "14-main-closing-question.png",
+        "14-production.png",
+        "15-main-closing-question.png",
     ]
     shown = {name.split("-", 1)[1].split("-")[0].removesuffix(".png") for name in names}
     assert set(SCREEN_KEYS) <= shown
@@ -69,6 +73,11 @@ def test_screenshots_of_every_screen_in_a_realistic_state(
         assert (image.width(), image.height()) == (1024, 768), path.name
     snapshot = machine.latest()
     assert snapshot is not None and snapshot.pieces_total >= 1  # a board was really cut
+    # The Production picture shows a shift of simulated history, not empty charts.
+    now = datetime.now(UTC)
+    history = database.list_production(now - timedelta(days=2), now)
+    assert sum(r.result is PieceResult.OK for r in history) > 500
+    assert {r.alarm_code for r in history} >= {"E032"}
 
 
 def test_service_user_leaves_the_kiosk_with_exit_status_64(qtbot, machine, database, tap) -> None:
