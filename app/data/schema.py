@@ -266,6 +266,14 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CREATE INDEX production_barrel ON production (barrel_number, stave_number)",
         ),
     ),
+    Migration(
+        10,
+        "each production record names the operator of the shift (who named himself)",
+        (
+            "ALTER TABLE production ADD COLUMN operator_name TEXT "
+            "CHECK (operator_name IS NULL OR length(operator_name) BETWEEN 1 AND 40)",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

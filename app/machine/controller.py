@@ -193,8 +193,9 @@ class MachineController(CycleControl):
                 self._refuse(self.sim_tools.handwheel(command))
             case cmd.PushJoystick(x=x, y=y, z=z):
                 self._refuse(self.sim_tools.push_joystick(x, y, z))
-            case cmd.SetUser(name=name):
+            case cmd.SetUser(name=name, operator=operator):
                 self.user = name
+                self.production.operator_name = operator or name
             case cmd.Shutdown():
                 pass  # the runtime ends the loop; nothing to do in the period
             case _:

@@ -87,6 +87,7 @@ def production_record(piece: PieceRecord) -> ProductionRecord:
         step_times_s=dict(piece.step_times_s),
         barrel_number=piece.barrel_number,
         stave_number=piece.stave_number,
+        operator_name=piece.operator_name or None,
     )
 
 

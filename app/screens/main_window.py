@@ -14,8 +14,9 @@ from PySide6.QtCore import QEvent, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QResizeEvent
 from PySide6.QtWidgets import QMainWindow, QStackedWidget, QVBoxLayout, QWidget
 
+from app.data.records import OPERATOR_NAME_MAX_CHARS
 from app.data.users import Role, User
-from app.machine.commands import SetUser
+from app.machine.commands import ResetShiftCounter, SetUser
 from app.machine.link import MachineLink
 from app.machine.snapshot import MachineSnapshot
 from app.screens.alarms_screen import AlarmsScreen
@@ -43,7 +44,6 @@ if TYPE_CHECKING:
 
 SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms")
 NOTICE_S = 6.0
-OPERATOR_NAME_MAX_CHARS = 32
 EXIT_LEAVE_KIOSK = 64  # packaging/: the kiosk service stays down on this exit status
 
 
@@ -107,6 +107,7 @@ class MainWindow(QMainWindow):
             notify=self.notify,
             navigate=self.show_screen,
             require=self.require,
+            new_shift=self.start_new_shift,
         )
         self.screens: dict[str, Screen] = {}
         for screen_class in (
@@ -145,7 +146,8 @@ class MainWindow(QMainWindow):
         self.resize(1024, 768)
         self.poller.start()
         self._clock_timer.start()
-        self.link.send(SetUser(self.session.name))  # the records name someone from the start
+        # the records name someone from the start
+        self.link.send(SetUser(self.session.name, self.session.operator_name))
 
     # -- screens -----------------------------------------------------------------------------
 
@@ -251,9 +253,19 @@ class MainWindow(QMainWindow):
         elif choice == "name":
             self.ask_operator_name()
 
+    def start_new_shift(self) -> TextKeyboard:
+        """New shift: the shift's counter starts from 0 and its operator names himself. The
+        last shift's name is cleared first, so no record of the new shift carries it (if
+        nobody types a name, the records name the panel's user)."""
+        self.link.send(ResetShiftCounter())
+        if self.session.operator_name:
+            self.session.name_operator("")
+        return self.ask_operator_name()
+
     def ask_operator_name(self) -> TextKeyboard:
         """The operator names himself (no PIN at operator level): every acknowledgement,
-        reset and manual action is then recorded with his name."""
+        reset and manual action, and each board's production record, then carries his
+        name."""
         keyboard = TextKeyboard(
             self.tr("Operator of this shift: your name"),
             self.session.operator_name,
@@ -313,7 +325,7 @@ class MainWindow(QMainWindow):
 
     def on_user_changed(self) -> None:
         self._show_user()
-        self.link.send(SetUser(self.session.name))
+        self.link.send(SetUser(self.session.name, self.session.operator_name))
         was_logged_in, self._logged_in = self._logged_in, self.session.user is not None
         if self.session.user is None and not was_logged_in:
             self.notify(self.tr("Operator of this shift: %1").replace("%1", self.session.name))

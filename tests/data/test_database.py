@@ -178,6 +178,7 @@ def test_forward_migration_keeps_the_data(tmp_path: Path) -> None:
         database.record_piece(piece(0))
         [record] = database.list_production(T0, T0 + timedelta(hours=1))
         assert record.step_times_s == {}  # v8: a record without step times
+        assert record.operator_name is None  # v10: a record naming no operator
         users = {u.role: u for u in database.list_users()}
         assert users == {}  # v1 files made by older software had their own users
         assert database.recipe_history() == []  # the v2 table exists and works
@@ -352,6 +353,17 @@ def test_the_step_times_are_kept_with_the_record(db: Database) -> None:
     [listed] = db.list_production(T0, T0 + timedelta(hours=1))
     assert listed == stored and listed.step_times_s == steps
     assert db.integrity_problems() == []
+
+
+def test_the_operator_of_the_shift_is_kept_with_the_record(db: Database) -> None:
+    stored = db.record_piece(piece(0, operator_name="Marko Novak"))
+    unnamed = db.record_piece(piece(1))  # a record from before operators were named
+    listed = db.list_production(T0, T0 + timedelta(hours=1))
+    assert listed == [stored, unnamed]
+    assert [r.operator_name for r in listed] == ["Marko Novak", None]
+    for name in ("", " ", "x" * 41):
+        with pytest.raises(RecordError, match="operator_name"):
+            db.record_piece(piece(2, operator_name=name))
 
 
 def test_a_naive_time_is_local_time(db: Database) -> None:
