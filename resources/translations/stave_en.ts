@@ -4,7 +4,7 @@
 <context>
     <name>AlarmDetailOverlay</name>
     <message>
-        <location filename="../../app/screens/alarm_detail.py" line="+132" />
+        <location filename="../../app/screens/alarm_detail.py" line="+128" />
         <source>What was found</source>
         <translation>What was found</translation>
     </message>
@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+64" />
+        <location filename="../../app/screens/texts.py" line="+65" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -837,7 +837,7 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+157" />
+        <location filename="../../app/screens/alarms_screen.py" line="+170" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
@@ -2008,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217" />
+        <location filename="../../app/screens/main_screen.py" line="+216" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2149,12 +2149,12 @@ shift</translation>
         <translation>New shift</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Start counting the pieces of a new shift from 0? The total count is kept.</source>
-        <translation>Start counting the pieces of a new shift from 0? The total count is kept.</translation>
+        <location line="+2" />
+        <source>Start counting the pieces of a new shift from 0? The total count is kept; the operator of the new shift then enters his name.</source>
+        <translation>Start counting the pieces of a new shift from 0? The total count is kept; the operator of the new shift then enters his name.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Start new shift</source>
         <translation>Start new shift</translation>
     </message>
@@ -2182,18 +2182,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+183" />
+        <location filename="../../app/screens/main_window.py" line="+185" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+175" />
+        <location line="+185" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-168" />
+        <location line="-178" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -2211,13 +2211,13 @@ shift</translation>
     </message>
     <message>
         <location line="-11" />
-        <location line="+183" />
+        <location line="+193" />
         <location line="+2" />
         <source>Leave the kiosk</source>
         <translation>Leave the kiosk</translation>
     </message>
     <message>
-        <location line="-177" />
+        <location line="-187" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
     </message>
@@ -2242,7 +2242,7 @@ shift</translation>
         <translation>Log in: enter your PIN</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+18" />
         <source>Operator of this shift: your name</source>
         <translation>Operator of this shift: your name</translation>
     </message>
@@ -3603,7 +3603,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231" />
+        <location filename="../../app/screens/system_screen.py" line="+221" />
         <source>System</source>
         <translation>System</translation>
     </message>

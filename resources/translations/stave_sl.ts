@@ -4,7 +4,7 @@
 <context>
     <name>AlarmDetailOverlay</name>
     <message>
-        <location filename="../../app/screens/alarm_detail.py" line="+132"/>
+        <location filename="../../app/screens/alarm_detail.py" line="+128"/>
         <source>What was found</source>
         <translation>Kaj je bilo ugotovljeno</translation>
     </message>
@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+64"/>
+        <location filename="../../app/screens/texts.py" line="+65"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -837,7 +837,7 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+157"/>
+        <location filename="../../app/screens/alarms_screen.py" line="+170"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
@@ -2008,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217"/>
+        <location filename="../../app/screens/main_screen.py" line="+216"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2149,12 +2149,12 @@ izmena</translation>
         <translation>Nova izmena</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Start counting the pieces of a new shift from 0? The total count is kept.</source>
-        <translation>Začnem štetje kosov nove izmene od 0? Skupno število ostane.</translation>
+        <location line="+2"/>
+        <source>Start counting the pieces of a new shift from 0? The total count is kept; the operator of the new shift then enters his name.</source>
+        <translation>Začnem štetje kosov nove izmene od 0? Skupno število ostane; upravljavec nove izmene nato vpiše svoje ime.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Start new shift</source>
         <translation>Začni novo izmeno</translation>
     </message>
@@ -2182,18 +2182,18 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+183"/>
+        <location filename="../../app/screens/main_window.py" line="+185"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+175"/>
+        <location line="+185"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
     <message>
-        <location line="-168"/>
+        <location line="-178"/>
         <source>The machine is not running.</source>
         <translation>Stroj ne deluje.</translation>
     </message>
@@ -2211,13 +2211,13 @@ izmena</translation>
     </message>
     <message>
         <location line="-11"/>
-        <location line="+183"/>
+        <location line="+193"/>
         <location line="+2"/>
         <source>Leave the kiosk</source>
         <translation>Zapusti kiosk</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-187"/>
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Odjavim uporabnika %1 in se vrnem na raven operaterja?</translation>
     </message>
@@ -2242,7 +2242,7 @@ izmena</translation>
         <translation>Prijava: vnesite PIN</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+18"/>
         <source>Operator of this shift: your name</source>
         <translation>Upravljavec te izmene: vaše ime</translation>
     </message>
@@ -3603,7 +3603,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231"/>
+        <location filename="../../app/screens/system_screen.py" line="+221"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
