@@ -189,6 +189,10 @@ class AlarmEvent:
     to_state: AlarmState
     user_name: str | None = None
     id: int | None = None
+    detail_json: str | None = None
+    """What was found as the machine's message code and arguments (JSON, written and read by
+    ``app.machine.refusals``), so the screens show it in the user's language; ``text`` is the
+    English line for logs, exports and the plant. None: no coded message (older rows too)."""
 
     def problems(self) -> list[str]:
         """Everything that makes this event unstorable, as messages naming the field."""
@@ -206,7 +210,18 @@ class AlarmEvent:
             found.append(
                 f"to_state: {self.to_state!r} is not allowed; a transition must change the state"
             )
+        if self.detail_json is not None and not _is_json_object(self.detail_json):
+            found.append(
+                f"detail_json: {self.detail_json!r} is not allowed; expected a JSON object or None"
+            )
         return found
+
+
+def _is_json_object(text: object) -> bool:
+    try:
+        return isinstance(text, str) and isinstance(json.loads(text), dict)
+    except ValueError:
+        return False
 
 
 @dataclass(frozen=True)
@@ -356,6 +371,7 @@ def alarm_fields(event: AlarmEvent) -> dict[str, Any]:
         "from_state": event.from_state.value,
         "to_state": event.to_state.value,
         "user_name": event.user_name,
+        "detail_json": event.detail_json,
     }
 
 
@@ -370,4 +386,5 @@ def alarm_from_fields(fields: Fields) -> AlarmEvent:
         from_state=AlarmState(fields["from_state"]),
         to_state=AlarmState(fields["to_state"]),
         user_name=fields["user_name"],
+        detail_json=_optional_text(fields, "detail_json"),
     )

@@ -39,8 +39,8 @@ from app.screens.formatting import format_table_time
 from app.screens.texts import (
     alarm_line,
     alarm_state_text,
-    alarm_text,
     alarm_title,
+    history_line,
     history_state_text,
 )
 from app.screens.theme import TOUCH_PX
@@ -358,7 +358,7 @@ class AlarmsScreen(Screen):
             values = (
                 format_table_time(event.time),
                 event.code,
-                alarm_text(event.code, event.text),
+                history_line(event),
                 event.source,
                 history_state_text(event.to_state.value),
                 event.user_name or "",
