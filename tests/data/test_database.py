@@ -24,6 +24,7 @@ from app.data.errors import (
     StorageError,
 )
 from app.data.paths import DATABASE_PATH_ENV
+from app.data.pending import AlarmWrite, decode_write, encode_write
 from app.data.recipe import Recipe, TiltMode, recipe_from_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.records import (
@@ -433,6 +434,23 @@ def test_alarm_history_with_filters(db: Database) -> None:
     window = AlarmEventFilter(start=T0 + timedelta(minutes=1), end=T0 + timedelta(minutes=3))
     assert [e.id for e in db.list_alarm_events(window)] == [3, 2]
     assert len(db.list_alarm_events(AlarmEventFilter(limit=2))) == 2
+
+
+def test_an_alarm_event_keeps_its_coded_message(db: Database) -> None:
+    coded = '{"reason": "LATCHED_ERROR", "args": [], "causes": []}'
+    event = alarm(0, "E011", "X", AlarmState.NORMAL, AlarmState.ACTIVE_UNACKED)
+    stored = db.record_alarm_event(replace(event, detail_json=coded))
+    plain = db.record_alarm_event(replace(event, time=event.time + timedelta(minutes=1)))
+    assert db.list_alarm_events() == [plain, stored]
+    assert (stored.detail_json, plain.detail_json) == (coded, None)
+    journalled = replace(stored, id=None)  # a journal line has no id yet
+    line = encode_write(AlarmWrite(journalled))
+    assert decode_write(line) == AlarmWrite(journalled)
+    del line["detail_json"]  # a journal line written before the column
+    assert decode_write(line) == AlarmWrite(replace(journalled, detail_json=None))
+    for damaged in ("[1]", "{", ""):
+        with pytest.raises(RecordError, match="detail_json"):
+            db.record_alarm_event(replace(event, detail_json=damaged))
 
 
 def test_an_invalid_alarm_event_is_refused(db: Database) -> None:
