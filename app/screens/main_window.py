@@ -36,7 +36,7 @@ from app.screens.theme import scale_for_size, stylesheet
 from app.screens.top_bar_message import ExpiringMessage
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import PinPad
+from app.screens.widgets.keypad import Keypad
 from app.screens.widgets.overlay import Overlay, top_overlay
 
 if TYPE_CHECKING:
@@ -276,9 +276,9 @@ class MainWindow(QMainWindow):
         self.context.open(keyboard)
         return keyboard
 
-    def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> PinPad:
+    def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> Keypad:
         """Open the PIN pad; a PIN below ``required`` is refused with a message."""
-        pad = PinPad(title)
+        pad = Keypad.for_pin(title)
 
         def checked(user: User | None, error: str) -> None:
             pad.set_busy(False)

@@ -1117,29 +1117,6 @@
     </message>
 </context>
 <context>
-    <name>FractionKeypad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+373"/>
-        <source>Cancel</source>
-        <translation>Prekliči</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>OK</source>
-        <translation>V redu</translation>
-    </message>
-    <message>
-        <location line="+51"/>
-        <source>Enter both the numerator and the denominator.</source>
-        <translation>Vnesite števec in imenovalec.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The denominator must not be 0.</source>
-        <translation>Imenovalec ne sme biti 0.</translation>
-    </message>
-</context>
-<context>
     <name>IoScreen</name>
     <message>
         <location filename="../../app/screens/io_screen.py" line="+103"/>
@@ -1394,6 +1371,59 @@
         <location line="+1"/>
         <source>Red lamp</source>
         <translation>Rdeča luč</translation>
+    </message>
+</context>
+<context>
+    <name>Keypad</name>
+    <message>
+        <location filename="../../app/screens/widgets/keypad.py" line="+284"/>
+        <source>Cancel</source>
+        <translation>Prekliči</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OK</source>
+        <translation>V redu</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Allowed: whole number from %1 to %2%3</source>
+        <translation>Dovoljeno: celo število od %1 do %2%3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Allowed: %1 to %2%3, or empty</source>
+        <translation>Dovoljeno: od %1 do %2%3 ali prazno</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Allowed: %1 to %2%3</source>
+        <translation>Dovoljeno: od %1 do %2%3</translation>
+    </message>
+    <message>
+        <location line="+118"/>
+        <source>Enter a number. %1</source>
+        <translation>Vnesite število. %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1%2 is outside the allowed range.</source>
+        <translation>%1%2 je zunaj dovoljenega območja.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Enter both the numerator and the denominator.</source>
+        <translation>Vnesite števec in imenovalec.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The denominator must not be 0.</source>
+        <translation>Imenovalec ne sme biti 0.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Enter your PIN.</source>
+        <translation>Vnesite PIN.</translation>
     </message>
 </context>
 <context>
@@ -2428,7 +2458,7 @@ izmena</translation>
         <translation>Pospešek ročnega premika %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Log in to change parameters.</source>
         <translation>Za spreminjanje parametrov se prijavite.</translation>
     </message>
@@ -2495,44 +2525,6 @@ izmena</translation>
         <location filename="../../app/screens/widgets/dialogs.py" line="+21"/>
         <source>OK</source>
         <translation>V redu</translation>
-    </message>
-</context>
-<context>
-    <name>NumberKeypad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="-221"/>
-        <source>Cancel</source>
-        <translation>Prekliči</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>OK</source>
-        <translation>V redu</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Allowed: whole number from %1 to %2%3</source>
-        <translation>Dovoljeno: celo število od %1 do %2%3</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Allowed: %1 to %2%3, or empty</source>
-        <translation>Dovoljeno: od %1 do %2%3 ali prazno</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Allowed: %1 to %2%3</source>
-        <translation>Dovoljeno: od %1 do %2%3</translation>
-    </message>
-    <message>
-        <location line="+54"/>
-        <source>Enter a number. %1</source>
-        <translation>Vnesite število. %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1%2 is outside the allowed range.</source>
-        <translation>%1%2 je zunaj dovoljenega območja.</translation>
     </message>
 </context>
 <context>
@@ -2845,24 +2837,6 @@ izmena</translation>
         <location line="+19"/>
         <source>PIN entry unlocked by %1 (logged).</source>
         <translation>Vnos PIN je odklenil %1 (zabeleženo).</translation>
-    </message>
-</context>
-<context>
-    <name>PinPad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+206"/>
-        <source>Cancel</source>
-        <translation>Prekliči</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>OK</source>
-        <translation>V redu</translation>
-    </message>
-    <message>
-        <location line="+38"/>
-        <source>Enter your PIN.</source>
-        <translation>Vnesite PIN.</translation>
     </message>
 </context>
 <context>

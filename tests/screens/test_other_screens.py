@@ -22,8 +22,8 @@ from app.screens.alarm_detail import AlarmDetailOverlay
 from app.screens.texts import alarm_help, alarm_line, machine_text
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button, open_pin_pad, wait_for
+from app.screens.widgets.keypad import KeypadMode
+from tests.screens.helpers import enter_pin, find_button, is_keypad, open_pin_pad, wait_for
 
 
 def keys(tap, overlay, text: str) -> None:
@@ -33,7 +33,7 @@ def keys(tap, overlay, text: str) -> None:
 
 def log_in(qtbot, window, tap, pin: str) -> None:
     open_pin_pad(qtbot, window, tap)
-    assert isinstance(window.overlay(), PinPad)
+    assert is_keypad(window.overlay(), KeypadMode.PIN)
     enter_pin(qtbot, window, tap, pin)
     assert window.overlay() is None
 
@@ -100,7 +100,7 @@ def test_jog_speed_set_on_the_keypad(qtbot, window, tap) -> None:
     open_manual(qtbot, window, tap)
     tap(find_button(window, "jogXYSpeed"))
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     keys(tap, keypad, "42")
     tap(find_button(keypad, "okButton"))
     wait_for(qtbot, window, lambda s: s.jog_xy[0] == 42.0)
@@ -237,7 +237,7 @@ def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -
     assert not find_button(window, "param_machine_height_mm").isEnabled()  # service only
     tap(find_button(window, "param_tool_radius_mm"))
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     keys(tap, keypad, "500")
     tap(find_button(keypad, "okButton"))
     assert keypad.is_open  # the catalogue allows 1 to 150 mm

@@ -35,7 +35,7 @@ from app.screens.theme import TOUCH_PX, scaled_px
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
+from app.screens.widgets.keypad import Keypad
 from tests.screens.helpers import find_button, wait_for
 
 MIN_TEXT_PX = 14
@@ -65,9 +65,9 @@ def every_view(qtbot, window) -> Iterator[tuple[str, QWidget]]:  # type: ignore[
         yield f"system/{group}", window
     window.show_screen("main")
     overlays = [
-        NumberKeypad("Thickness H", 27, 25, 90, "mm"),
-        FractionKeypad("Width ratio", 3, 4, "above 0, below 1", lambda n, d: ""),
-        PinPad("PIN"),
+        Keypad.for_number("Thickness H", 27, 25, 90, "mm"),
+        Keypad.for_fraction("Width ratio", 3, 4, "above 0, below 1", lambda n, d: ""),
+        Keypad.for_pin("PIN"),
         TextKeyboard("Name", "Barrique"),
         ChoiceOverlay("Choose", [(f"{n}  Barrique", n) for n in range(12)], columns=2),
         ConfirmOverlay("Delete?", "Delete the recipe?", "Delete"),
@@ -188,9 +188,9 @@ def positions(pad) -> dict[str, tuple[int, int]]:  # type: ignore[no-untyped-def
 
 def test_pin_number_and_fraction_keys_are_in_the_same_places(qtbot, host) -> None:
     pads = [
-        PinPad("PIN"),
-        NumberKeypad("Thickness H", 27, 25, 90, "mm"),
-        FractionKeypad("Width ratio", 3, 4, "above 0, below 1", lambda n, d: ""),
+        Keypad.for_pin("PIN"),
+        Keypad.for_number("Thickness H", 27, 25, 90, "mm"),
+        Keypad.for_fraction("Width ratio", 3, 4, "above 0, below 1", lambda n, d: ""),
     ]
     layouts = [positions(pad) for pad in pads]
     assert layouts[0] == layouts[1] == layouts[2]
