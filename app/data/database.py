@@ -152,9 +152,9 @@ _RECIPE_COLUMNS = (
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
-    "alarm_code, resumed, step_times_json, barrel_number, stave_number"
+    "alarm_code, resumed, step_times_json, barrel_number, stave_number, operator_name"
 )
-_ALARM_COLUMNS = "id, time, code, text, source, from_state, to_state, user_name"
+_ALARM_COLUMNS = "id, time, code, text, source, from_state, to_state, user_name, detail_json"
 
 
 def _recipe_from_row(row: sqlite3.Row) -> Recipe:

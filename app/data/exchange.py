@@ -188,6 +188,7 @@ PRODUCTION_COLUMNS: tuple[str, ...] = (
     "alarm_code",
     "barrel_number",
     "stave_number",
+    "operator_name",
 )
 
 
@@ -220,6 +221,7 @@ def production_to_csv(records: Sequence[ProductionRecord], tz: tzinfo | None = N
                 to_csv_text(record.alarm_code or ""),
                 _cell(record.barrel_number, 0),
                 _cell(record.stave_number, 0),
+                to_csv_text(record.operator_name or ""),
             ]
         )
     return buffer.getvalue()

@@ -16,6 +16,9 @@ from datetime import UTC, datetime
 from enum import Enum
 from typing import Any, Protocol
 
+OPERATOR_NAME_MAX_CHARS = 40
+"""The longest name an operator gives himself for a shift (the production table's limit)."""
+
 
 class PieceResult(Enum):
     """How one board ended."""
@@ -85,6 +88,9 @@ class ProductionRecord:
     the step times were)."""
     barrel_number: int | None = None  # the barrel this board was cut for (None: single staves)
     stave_number: int | None = None  # its place in that barrel, 1 = the first stave
+    operator_name: str | None = None
+    """Who ran the machine: the operator of the shift as he named himself, else the panel's
+    user (None for records kept before the name was)."""
 
     def problems(self) -> list[str]:
         """Everything that makes this record unstorable, as messages naming the field."""
@@ -122,6 +128,15 @@ class ProductionRecord:
             found.append(f"alarm_code: {self.alarm_code!r} is not allowed; expected a code or None")
         found.extend(_step_time_problems(self.step_times_s))
         found.extend(self._barrel_problems())
+        if self.operator_name is not None and (
+            not isinstance(self.operator_name, str)
+            or not self.operator_name.strip()
+            or len(self.operator_name) > OPERATOR_NAME_MAX_CHARS
+        ):
+            found.append(
+                f"operator_name: {self.operator_name!r} is not allowed; expected a name of "
+                f"1 to {OPERATOR_NAME_MAX_CHARS} characters or None"
+            )
         return found
 
     def _barrel_problems(self) -> list[str]:
@@ -174,6 +189,10 @@ class AlarmEvent:
     to_state: AlarmState
     user_name: str | None = None
     id: int | None = None
+    detail_json: str | None = None
+    """What was found as the machine's message code and arguments (JSON, written and read by
+    ``app.machine.refusals``), so the screens show it in the user's language; ``text`` is the
+    English line for logs, exports and the plant. None: no coded message (older rows too)."""
 
     def problems(self) -> list[str]:
         """Everything that makes this event unstorable, as messages naming the field."""
@@ -191,7 +210,18 @@ class AlarmEvent:
             found.append(
                 f"to_state: {self.to_state!r} is not allowed; a transition must change the state"
             )
+        if self.detail_json is not None and not _is_json_object(self.detail_json):
+            found.append(
+                f"detail_json: {self.detail_json!r} is not allowed; expected a JSON object or None"
+            )
         return found
+
+
+def _is_json_object(text: object) -> bool:
+    try:
+        return isinstance(text, str) and isinstance(json.loads(text), dict)
+    except ValueError:
+        return False
 
 
 @dataclass(frozen=True)
@@ -277,6 +307,7 @@ def production_fields(record: ProductionRecord) -> dict[str, Any]:
         "step_times_json": json.dumps(record.step_times_s) if record.step_times_s else None,
         "barrel_number": record.barrel_number,
         "stave_number": record.stave_number,
+        "operator_name": record.operator_name,
     }
 
 
@@ -300,6 +331,7 @@ def production_from_fields(fields: Fields) -> ProductionRecord:
         step_times_s=_step_times(fields),
         barrel_number=_optional_field(fields, "barrel_number"),
         stave_number=_optional_field(fields, "stave_number"),
+        operator_name=_optional_text(fields, "operator_name"),
     )
 
 
@@ -321,6 +353,14 @@ def _optional_field(fields: Fields, key: str) -> int | None:
     return optional_int(fields[key]) if key in fields.keys() else None  # noqa: SIM118
 
 
+def _optional_text(fields: Fields, key: str) -> str | None:
+    """A text column that older rows and journal lines do not have (None then)."""
+    if key not in fields.keys():  # noqa: SIM118
+        return None
+    value = fields[key]
+    return None if value is None else str(value)
+
+
 def alarm_fields(event: AlarmEvent) -> dict[str, Any]:
     """The stored columns of an alarm transition (time in the stored text form), without id."""
     return {
@@ -331,6 +371,7 @@ def alarm_fields(event: AlarmEvent) -> dict[str, Any]:
         "from_state": event.from_state.value,
         "to_state": event.to_state.value,
         "user_name": event.user_name,
+        "detail_json": event.detail_json,
     }
 
 
@@ -345,4 +386,5 @@ def alarm_from_fields(fields: Fields) -> AlarmEvent:
         from_state=AlarmState(fields["from_state"]),
         to_state=AlarmState(fields["to_state"]),
         user_name=fields["user_name"],
+        detail_json=_optional_text(fields, "detail_json"),
     )

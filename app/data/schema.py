@@ -266,6 +266,23 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CREATE INDEX production_barrel ON production (barrel_number, stave_number)",
         ),
     ),
+    Migration(
+        10,
+        "each production record names the operator of the shift (who named himself)",
+        (
+            "ALTER TABLE production ADD COLUMN operator_name TEXT "
+            "CHECK (operator_name IS NULL OR length(operator_name) BETWEEN 1 AND 40)",
+        ),
+    ),
+    Migration(
+        11,
+        "each alarm transition keeps its message as a reason and arguments, so the history is "
+        "shown in the user's language",
+        (
+            "ALTER TABLE alarm_events ADD COLUMN detail_json TEXT "
+            "CHECK (detail_json IS NULL OR json_valid(detail_json))",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

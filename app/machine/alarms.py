@@ -452,6 +452,7 @@ class AlarmTransition:
     to_state: AlarmState
     time: float  # epoch seconds
     user: str = ""
+    detail: Refusal | None = None  # what was found, kept coded for the screens to translate
 
 
 @dataclass
@@ -519,6 +520,7 @@ class AlarmManager:
             target,
             self.wall_clock(),
             user,
+            alarm.detail,
         )
         alarm.state = target
         self.history.append(transition)

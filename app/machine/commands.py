@@ -209,9 +209,12 @@ class PushJoystick:
 
 @dataclass(frozen=True)
 class SetUser:
-    """The logged-in user changed (for the audit trail of alarms and records)."""
+    """The logged-in user changed (for the audit trail of alarms and records). ``operator``
+    is the operator of the shift as he named himself ("" while nobody has): production
+    records name him, also while a technician is logged in at the panel."""
 
     name: str
+    operator: str = ""
 
 
 @dataclass(frozen=True)

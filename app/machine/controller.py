@@ -155,8 +155,9 @@ class MachineController(OperatorRoom):
                 | cmd.PushJoystick()
             ):
                 self._refuse(self.sim_tools.handle(command))
-            case cmd.SetUser(name=name):
+            case cmd.SetUser(name=name, operator=operator):
                 self.user = name
+                self.production.operator_name = operator or name
             case cmd.Shutdown():
                 pass  # the runtime ends the loop; nothing to do in the period
             case _:

@@ -50,6 +50,7 @@ from app.machine.alarms import AlarmTransition
 from app.machine.interrupted import InterruptedBoard, InterruptedRecordError
 from app.machine.process_params import config_parameters, stave_limits
 from app.machine.recipe_on_machine import recipe_from_json, recipe_to_json
+from app.machine.refusals import refusal_to_json
 from app.machine.snapshot import AlarmState
 from app.machine.store import PieceRecord
 
@@ -87,6 +88,7 @@ def production_record(piece: PieceRecord) -> ProductionRecord:
         step_times_s=dict(piece.step_times_s),
         barrel_number=piece.barrel_number,
         stave_number=piece.stave_number,
+        operator_name=piece.operator_name or None,
     )
 
 
@@ -99,6 +101,7 @@ def alarm_event(t: AlarmTransition) -> AlarmEvent:
         from_state=_ALARM_STATES[t.from_state],
         to_state=_ALARM_STATES[t.to_state],
         user_name=t.user or None,
+        detail_json=None if t.detail is None else refusal_to_json(t.detail),
     )
 
 

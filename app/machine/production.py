@@ -39,6 +39,7 @@ class Production:
         self.last_step_times_s: dict[str, float] = {}
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         self._shift_params: dict[str, float] | None = None  # None: counting since power-up
+        self.operator_name = ""  # who each record names (SetUser): the shift's operator
 
     def follow_shifts(self, params: Mapping[str, float]) -> None:
         """Count the pieces of the shift the plan says is running (those stored before a
@@ -117,6 +118,7 @@ class Production:
             cycle.step_times_s(),
             None if placed is None else placed.barrel_number,
             None if placed is None else placed.number,
+            self.operator_name,
         )
         self._store.record_piece(piece)
         self.finished_cycles.append((piece, cycle))

@@ -10,8 +10,10 @@ placeholders) and fill in the arguments. The list of texts to translate is this 
 from __future__ import annotations
 
 import enum
+import json
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 
 class Reason(enum.Enum):
@@ -202,6 +204,39 @@ class Refusal:
     def __str__(self) -> str:
         """The English text (logs, tests, the command line)."""
         return self.text()
+
+
+def refusal_to_json(message: Refusal) -> str:
+    """A message as stored with an alarm's history (its reason by name, so a reworded
+    template still finds it), for the screens to show later in the user's language."""
+    return json.dumps(_refusal_mapping(message), ensure_ascii=False)
+
+
+def _refusal_mapping(message: Refusal) -> dict[str, Any]:
+    return {
+        "reason": message.reason.name,
+        "args": list(message.args),
+        "causes": [_refusal_mapping(cause) for cause in message.causes],
+    }
+
+
+def refusal_from_json(text: str | None) -> Refusal | None:
+    """Inverse of :func:`refusal_to_json`; None for no text, or for one this software cannot
+    read (a reason it does not have): the caller shows the stored English line then."""
+    if not text:
+        return None
+    try:
+        return _refusal_from_mapping(json.loads(text))
+    except (ValueError, KeyError, TypeError):
+        return None
+
+
+def _refusal_from_mapping(fields: dict[str, Any]) -> Refusal:
+    return Refusal(
+        Reason[fields["reason"]],
+        tuple(str(arg) for arg in fields["args"]),
+        tuple(_refusal_from_mapping(cause) for cause in fields["causes"]),
+    )
 
 
 def refusal(reason: Reason, *args: object) -> Refusal:

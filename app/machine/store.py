@@ -38,6 +38,7 @@ class PieceRecord:
     step_times_s: dict[str, float] = field(default_factory=dict)  # timed step -> seconds
     barrel_number: int | None = None  # the barrel the board was cut for (None: single staves)
     stave_number: int | None = None  # its place in that barrel
+    operator_name: str = ""  # the operator of the shift (else the panel's user); "": nobody
 
 
 class MachineStore(Protocol):

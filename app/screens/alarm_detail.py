@@ -27,8 +27,8 @@ from app.machine.snapshot import AlarmView
 from app.screens.formatting import format_table_time
 from app.screens.texts import (
     alarm_help,
-    alarm_text,
     alarm_title,
+    history_found,
     history_state_text,
     machine_text,
     severity_text,
@@ -66,12 +66,8 @@ def facts_of_view(alarm: AlarmView) -> AlarmFacts:
 
 
 def facts_of_event(event: AlarmEvent) -> AlarmFacts:
-    """A history row: its stored line is English; the title is translated, what follows the
-    title is shown as it was recorded."""
-    line = alarm_text(event.code, event.text)
-    title = alarm_title(event.code)
-    found = line[len(title) :].lstrip(": ") if line.startswith(title) else line
-    return AlarmFacts(event.code, event.source, found, "", "", event.time)
+    """A history row, in the user's language as far as it was stored coded."""
+    return AlarmFacts(event.code, event.source, history_found(event), "", "", event.time)
 
 
 def episode(events: Sequence[AlarmEvent], at: datetime) -> list[AlarmEvent]:

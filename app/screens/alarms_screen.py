@@ -39,10 +39,11 @@ from app.screens.formatting import format_table_time
 from app.screens.texts import (
     alarm_line,
     alarm_state_text,
-    alarm_text,
     alarm_title,
+    history_line,
     history_state_text,
 )
+from app.screens.theme import TOUCH_PX
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay
 from app.screens.widgets.kinetic import kinetic_scroll
@@ -67,12 +68,20 @@ def _table(name: str, columns: int) -> QTableWidget:
     table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
     table.setAlternatingRowColors(True)
     table.verticalHeader().setVisible(False)
-    table.verticalHeader().setDefaultSectionSize(44)
+    set_row_height(table, TOUCH_PX)  # a row is tapped to open the alarm
     table.setWordWrap(False)
     table.horizontalHeader().setHighlightSections(False)
     table.setVerticalScrollMode(QAbstractItemView.ScrollMode.ScrollPerPixel)
     kinetic_scroll(table)
     return table
+
+
+def set_row_height(table: QTableWidget, height_px: int) -> None:
+    """Rows a finger opens are at least ``height_px`` high, also after resizing to contents."""
+    header = table.verticalHeader()
+    header.setMinimumSectionSize(height_px)
+    header.setDefaultSectionSize(height_px)
+    table.resizeRowsToContents()
 
 
 def _item(text: str) -> QTableWidgetItem:
@@ -150,6 +159,10 @@ class AlarmsScreen(Screen):
         layout.addWidget(active_panel, 2)
         layout.addWidget(history_panel, 3)
         self.retranslate()
+
+    def apply_scale(self, scale: float) -> None:
+        for table in (self.active_table, self.history_table):
+            set_row_height(table, round(TOUCH_PX * scale))
 
     # -- texts ----------------------------------------------------------------------------------
 
@@ -345,7 +358,7 @@ class AlarmsScreen(Screen):
             values = (
                 format_table_time(event.time),
                 event.code,
-                alarm_text(event.code, event.text),
+                history_line(event),
                 event.source,
                 history_state_text(event.to_state.value),
                 event.user_name or "",

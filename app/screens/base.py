@@ -38,6 +38,8 @@ class ScreenContext:
     navigate: Callable[[str], None]  # switch to the screen with this key
     # run the action now if the user has the role, else after a PIN of that role was entered
     require: Callable[[Role, Callable[[], None]], None]
+    # New shift: count from 0 and ask the operator of the new shift for his name
+    new_shift: Callable[[], object]
 
     def send(self, command: Command) -> None:
         self.link.send(command)

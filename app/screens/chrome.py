@@ -41,7 +41,9 @@ class TopBar(QFrame):
         self.language_button.clicked.connect(self.languageClicked)
         self.clock_label = styled_label("", "value", "clockLabel")
         layout = QHBoxLayout(self)
-        layout.setContentsMargins(10, 6, 10, 6)
+        # 2 px above and below: the buttons are finger-sized (theme.TOUCH_PX) and the bar
+        # stays as high as it was with smaller ones, so the screens below keep their room.
+        layout.setContentsMargins(10, 2, 10, 2)
         layout.setSpacing(12)
         layout.addWidget(self.lamp)
         layout.addWidget(self.state_label)
@@ -118,7 +120,7 @@ class NavBar(QFrame):
         self.group = QButtonGroup(self)
         self.group.setExclusive(True)
         layout = QHBoxLayout(self)
-        layout.setContentsMargins(8, 6, 8, 6)
+        layout.setContentsMargins(8, 4, 8, 4)
         layout.setSpacing(8)
         for key in keys:
             button = touch_button(f"nav_{key}", "nav")

@@ -29,7 +29,6 @@ from app.machine.commands import (
     Home,
     LoadBoard,
     Reset,
-    ResetShiftCounter,
     Resume,
     SelectRecipe,
     Start,
@@ -317,10 +316,13 @@ class MainScreen(Screen):
     def confirm_reset_shift(self) -> None:
         overlay = ConfirmOverlay(
             self.tr("New shift"),
-            self.tr("Start counting the pieces of a new shift from 0? The total count is kept."),
+            self.tr(
+                "Start counting the pieces of a new shift from 0? The total count is kept;"
+                " the operator of the new shift then enters his name."
+            ),
             self.tr("Start new shift"),
         )
-        overlay.finished.connect(lambda ok: self.context.send(ResetShiftCounter()) if ok else None)
+        overlay.finished.connect(lambda ok: self.context.new_shift() if ok else None)
         self.context.open(overlay)
 
     def _show_recipe_number(self) -> None:

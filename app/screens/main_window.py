@@ -14,8 +14,9 @@ from PySide6.QtCore import QEvent, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QResizeEvent
 from PySide6.QtWidgets import QMainWindow, QStackedWidget, QVBoxLayout, QWidget
 
+from app.data.records import OPERATOR_NAME_MAX_CHARS
 from app.data.users import Role, User
-from app.machine.commands import SetUser
+from app.machine.commands import ResetShiftCounter, SetUser
 from app.machine.link import MachineLink
 from app.machine.snapshot import MachineSnapshot
 from app.screens.alarms_screen import AlarmsScreen
@@ -36,7 +37,7 @@ from app.screens.theme import scale_for_size, stylesheet
 from app.screens.top_bar_message import ExpiringMessage
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import PinPad
+from app.screens.widgets.keypad import Keypad
 from app.screens.widgets.overlay import Overlay, top_overlay
 
 if TYPE_CHECKING:
@@ -44,7 +45,6 @@ if TYPE_CHECKING:
 
 SCREEN_KEYS = ("main", "recipes", "system", "manual", "alarms", "production")
 NOTICE_S = 6.0
-OPERATOR_NAME_MAX_CHARS = 32
 EXIT_LEAVE_KIOSK = 64  # packaging/: the kiosk service stays down on this exit status
 
 
@@ -108,6 +108,7 @@ class MainWindow(QMainWindow):
             notify=self.notify,
             navigate=self.show_screen,
             require=self.require,
+            new_shift=self.start_new_shift,
         )
         self.screens: dict[str, Screen] = {}
         for screen_class in (
@@ -147,7 +148,8 @@ class MainWindow(QMainWindow):
         self.resize(1024, 768)
         self.poller.start()
         self._clock_timer.start()
-        self.link.send(SetUser(self.session.name))  # the records name someone from the start
+        # the records name someone from the start
+        self.link.send(SetUser(self.session.name, self.session.operator_name))
 
     # -- screens -----------------------------------------------------------------------------
 
@@ -253,9 +255,19 @@ class MainWindow(QMainWindow):
         elif choice == "name":
             self.ask_operator_name()
 
+    def start_new_shift(self) -> TextKeyboard:
+        """New shift: the shift's counter starts from 0 and its operator names himself. The
+        last shift's name is cleared first, so no record of the new shift carries it (if
+        nobody types a name, the records name the panel's user)."""
+        self.link.send(ResetShiftCounter())
+        if self.session.operator_name:
+            self.session.name_operator("")
+        return self.ask_operator_name()
+
     def ask_operator_name(self) -> TextKeyboard:
         """The operator names himself (no PIN at operator level): every acknowledgement,
-        reset and manual action is then recorded with his name."""
+        reset and manual action, and each board's production record, then carries his
+        name."""
         keyboard = TextKeyboard(
             self.tr("Operator of this shift: your name"),
             self.session.operator_name,
@@ -266,9 +278,9 @@ class MainWindow(QMainWindow):
         self.context.open(keyboard)
         return keyboard
 
-    def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> PinPad:
+    def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> Keypad:
         """Open the PIN pad; a PIN below ``required`` is refused with a message."""
-        pad = PinPad(title)
+        pad = Keypad.for_pin(title)
 
         def checked(user: User | None, error: str) -> None:
             pad.set_busy(False)
@@ -315,7 +327,7 @@ class MainWindow(QMainWindow):
 
     def on_user_changed(self) -> None:
         self._show_user()
-        self.link.send(SetUser(self.session.name))
+        self.link.send(SetUser(self.session.name, self.session.operator_name))
         was_logged_in, self._logged_in = self._logged_in, self.session.user is not None
         if self.session.user is None and not was_logged_in:
             self.notify(self.tr("Operator of this shift: %1").replace("%1", self.session.name))

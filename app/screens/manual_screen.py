@@ -47,7 +47,7 @@ from app.screens.formatting import format_number
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ConfirmOverlay
 from app.screens.widgets.hold_button import HoldButton
-from app.screens.widgets.keypad import NumberKeypad
+from app.screens.widgets.keypad import Keypad
 from app.screens.widgets.pendant_status import PendantStatus
 from app.screens.widgets.readouts import AxisReadout, reason_label, set_text, styled_label
 
@@ -309,7 +309,9 @@ class ManualScreen(Screen):
         title = (
             self.tr("Jog speed %1") if column == 0 else self.tr("Jog acceleration %1")
         ).replace("%1", "X-Y" if group == "XY" else "Z")
-        keypad = NumberKeypad(title, current, spec.minimum, spec.maximum, spec.unit, decimals=2)
+        keypad = Keypad.for_number(
+            title, current, spec.minimum, spec.maximum, spec.unit, decimals=2
+        )
 
         def accepted(value: float) -> None:
             # The System screen's Jogging parameter: one value, logged, kept across a restart.
@@ -350,7 +352,7 @@ class ManualScreen(Screen):
                 self.context.send(MoveTo(chosen[0], chosen[1], chosen[2]))
                 return
             axis, title, low, high, unit = fields[index]
-            keypad = NumberKeypad(
+            keypad = Keypad.for_number(
                 title,
                 self.snapshot.axis(axis).position if self.snapshot is not None else 0.0,
                 -1e6 if low is None else low,

@@ -60,7 +60,7 @@ from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import FractionKeypad, NumberKeypad
+from app.screens.widgets.keypad import Keypad
 from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.plan_view import PlanView
 from app.screens.widgets.readouts import set_text, styled_label
@@ -601,7 +601,7 @@ class RecipesScreen(Screen):
             self.context.open(keyboard)
         elif name in ("length_ratio", "width_ratio"):
             ratio: Ratio = getattr(draft, name)
-            keypad = FractionKeypad(
+            keypad = Keypad.for_fraction(
                 title,
                 ratio.numerator,
                 ratio.denominator,
@@ -624,7 +624,7 @@ class RecipesScreen(Screen):
         elif name in FAMILY_FIELDS:
             spec = FAMILY_FIELDS[name]
             current = dict(draft.profile.params).get(name, spec.default)
-            keypad_family = NumberKeypad(
+            keypad_family = Keypad.for_number(
                 title,
                 current,
                 spec.minimum,
@@ -638,7 +638,7 @@ class RecipesScreen(Screen):
         elif name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             optional = name in OPTIONAL_NUMBERS
-            keypad_number = NumberKeypad(
+            keypad_number = Keypad.for_number(
                 title,
                 getattr(draft, name),
                 low,
@@ -823,7 +823,7 @@ class RecipesScreen(Screen):
     # -- preview ---------------------------------------------------------------------------
 
     def edit_preview_width(self) -> None:
-        keypad = NumberKeypad(
+        keypad = Keypad.for_number(
             self.tr("Board width for the preview"),
             self.preview_width_mm,
             1.0,

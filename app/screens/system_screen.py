@@ -53,7 +53,7 @@ from app.screens.opcua_page import OpcuaPage
 from app.screens.pin_lockout import PinLockoutBar
 from app.screens.texts import parameter_text, role_text
 from app.screens.widgets.buttons import touch_button
-from app.screens.widgets.keypad import NumberKeypad
+from app.screens.widgets.keypad import Keypad
 from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.readouts import set_text, styled_label
 from app.screens.widgets.sim_pendant import SimPendantPanel
@@ -380,7 +380,7 @@ class SystemScreen(Screen):
                 error = problems[0] if problems else None
             return error.message if error is not None else ""
 
-        keypad = NumberKeypad(
+        keypad = Keypad.for_number(
             parameter_text(spec.description),
             current,
             spec.minimum,

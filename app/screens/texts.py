@@ -15,9 +15,10 @@ from dataclasses import dataclass
 
 from PySide6.QtCore import QCoreApplication
 
+from app.data.records import AlarmEvent
 from app.data.users import Role
 from app.machine.alarms import definition_of
-from app.machine.refusals import Refusal
+from app.machine.refusals import Refusal, refusal_from_json
 from app.machine.snapshot import AlarmState, AlarmView
 from app.machine.states import CycleStep, MachineState
 
@@ -149,16 +150,29 @@ def alarm_line(alarm: AlarmView) -> str:
     return f"{title}: {found}" if found else title
 
 
-def alarm_text(code: str, text: str) -> str:
-    """A stored alarm line (the history keeps English): its catalogue title translated, the
-    recorded detail kept as it was written."""
-    definition = definition_of(code)
+def history_found(event: AlarmEvent) -> str:
+    """What a history row found, in the user's language: its stored message code and
+    arguments translated as the active alarms are; a row without them (older rows, a
+    device's own words) shows its recorded English detail."""
+    detail = refusal_from_json(event.detail_json)
+    if detail is not None:
+        return machine_text(detail)
+    definition = definition_of(event.code)
     if definition is None:
-        return text
-    title = _t(ALARM_TEXT_CONTEXT, definition.text)
-    if text.startswith(definition.text):
-        return title + text[len(definition.text) :]
-    return title
+        return event.text
+    if event.text.startswith(definition.text):
+        return event.text[len(definition.text) :].lstrip(": ")
+    return ""
+
+
+def history_line(event: AlarmEvent) -> str:
+    """A history row in one line: the alarm's title and what was found, as ``alarm_line``
+    writes an active alarm."""
+    found = history_found(event)
+    if definition_of(event.code) is None:
+        return found
+    title = alarm_title(event.code)
+    return f"{title}: {found}" if found else title
 
 
 @dataclass(frozen=True)

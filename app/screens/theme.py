@@ -20,6 +20,12 @@ BASE_WIDTH_PX = 1024
 BASE_HEIGHT_PX = 768
 MAX_SCALE = 1.45
 
+# The smallest thing a finger is asked to hit, in px at scale 1.0 (about 12 mm on a 12"
+# 1024x768 panel). Buttons, list and table rows that open something, and the alarm banner are
+# at least this high and wide; the button sizes below are content heights, to which the theme
+# adds 2 x 4 px padding and 2 x 2 px border (a list row: 2 x 4 px padding and a 1 px line).
+TOUCH_PX = 60
+
 # Sizes in px at scale 1.0 (a 1024x768 panel).
 _SIZES_PX: dict[str, float] = {
     "fs_small": 14,
@@ -32,16 +38,17 @@ _SIZES_PX: dict[str, float] = {
     "button_h": 50,
     "button_w": 60,
     "big_button_h": 76,
-    "nav_h": 52,
+    "nav_h": 48,
     "key_h": 54,
     "key_w": 74,
     "smallkey_w": 56,
     "jog_h": 78,
-    "row_h": 40,
-    "bar_h": 40,
+    "row_h": 51,
+    "touch": TOUCH_PX,
+    "bar_h": 48,
     "recipe_h": 60,
     "arrow_w": 56,
-    "banner_h": 40,
+    "banner_h": 52,
     "scroll_w": 40,
     "progress_h": 24,
     "radius": 6,

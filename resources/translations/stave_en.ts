@@ -4,7 +4,7 @@
 <context>
     <name>AlarmDetailOverlay</name>
     <message>
-        <location filename="../../app/screens/alarm_detail.py" line="+132" />
+        <location filename="../../app/screens/alarm_detail.py" line="+128" />
         <source>What was found</source>
         <translation>What was found</translation>
     </message>
@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+64" />
+        <location filename="../../app/screens/texts.py" line="+65" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -837,7 +837,7 @@
 <context>
     <name>AlarmsScreen</name>
     <message>
-        <location filename="../../app/screens/alarms_screen.py" line="+157" />
+        <location filename="../../app/screens/alarms_screen.py" line="+170" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
@@ -1117,29 +1117,6 @@
     </message>
 </context>
 <context>
-    <name>FractionKeypad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+373" />
-        <source>Cancel</source>
-        <translation>Cancel</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location line="+51" />
-        <source>Enter both the numerator and the denominator.</source>
-        <translation>Enter both the numerator and the denominator.</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>The denominator must not be 0.</source>
-        <translation>The denominator must not be 0.</translation>
-    </message>
-</context>
-<context>
     <name>IoScreen</name>
     <message>
         <location filename="../../app/screens/io_screen.py" line="+103" />
@@ -1394,6 +1371,59 @@
         <location line="+1" />
         <source>Red lamp</source>
         <translation>Red lamp</translation>
+    </message>
+</context>
+<context>
+    <name>Keypad</name>
+    <message>
+        <location filename="../../app/screens/widgets/keypad.py" line="+284" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Allowed: whole number from %1 to %2%3</source>
+        <translation>Allowed: whole number from %1 to %2%3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Allowed: %1 to %2%3, or empty</source>
+        <translation>Allowed: %1 to %2%3, or empty</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Allowed: %1 to %2%3</source>
+        <translation>Allowed: %1 to %2%3</translation>
+    </message>
+    <message>
+        <location line="+118" />
+        <source>Enter a number. %1</source>
+        <translation>Enter a number. %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1%2 is outside the allowed range.</source>
+        <translation>%1%2 is outside the allowed range.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Enter both the numerator and the denominator.</source>
+        <translation>Enter both the numerator and the denominator.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The denominator must not be 0.</source>
+        <translation>The denominator must not be 0.</translation>
+    </message>
+    <message>
+        <location line="+33" />
+        <source>Enter your PIN.</source>
+        <translation>Enter your PIN.</translation>
     </message>
 </context>
 <context>
@@ -2008,7 +2038,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217" />
+        <location filename="../../app/screens/main_screen.py" line="+216" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2149,12 +2179,12 @@ shift</translation>
         <translation>New shift</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Start counting the pieces of a new shift from 0? The total count is kept.</source>
-        <translation>Start counting the pieces of a new shift from 0? The total count is kept.</translation>
+        <location line="+2" />
+        <source>Start counting the pieces of a new shift from 0? The total count is kept; the operator of the new shift then enters his name.</source>
+        <translation>Start counting the pieces of a new shift from 0? The total count is kept; the operator of the new shift then enters his name.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Start new shift</source>
         <translation>Start new shift</translation>
     </message>
@@ -2182,18 +2212,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+185" />
+        <location filename="../../app/screens/main_window.py" line="+187" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+175" />
+        <location line="+185" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-168" />
+        <location line="-178" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -2211,13 +2241,13 @@ shift</translation>
     </message>
     <message>
         <location line="-11" />
-        <location line="+184" />
+        <location line="+194" />
         <location line="+2" />
         <source>Leave the kiosk</source>
         <translation>Leave the kiosk</translation>
     </message>
     <message>
-        <location line="-178" />
+        <location line="-188" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
     </message>
@@ -2242,7 +2272,7 @@ shift</translation>
         <translation>Log in: enter your PIN</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+18" />
         <source>Operator of this shift: your name</source>
         <translation>Operator of this shift: your name</translation>
     </message>
@@ -2433,7 +2463,7 @@ shift</translation>
         <translation>Jog acceleration %1</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+10" />
         <source>Log in to change parameters.</source>
         <translation>Log in to change parameters.</translation>
     </message>
@@ -2500,44 +2530,6 @@ shift</translation>
         <location filename="../../app/screens/widgets/dialogs.py" line="+21" />
         <source>OK</source>
         <translation>OK</translation>
-    </message>
-</context>
-<context>
-    <name>NumberKeypad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="-221" />
-        <source>Cancel</source>
-        <translation>Cancel</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>Allowed: whole number from %1 to %2%3</source>
-        <translation>Allowed: whole number from %1 to %2%3</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Allowed: %1 to %2%3, or empty</source>
-        <translation>Allowed: %1 to %2%3, or empty</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Allowed: %1 to %2%3</source>
-        <translation>Allowed: %1 to %2%3</translation>
-    </message>
-    <message>
-        <location line="+54" />
-        <source>Enter a number. %1</source>
-        <translation>Enter a number. %1</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>%1%2 is outside the allowed range.</source>
-        <translation>%1%2 is outside the allowed range.</translation>
     </message>
 </context>
 <context>
@@ -2850,24 +2842,6 @@ shift</translation>
         <location line="+19" />
         <source>PIN entry unlocked by %1 (logged).</source>
         <translation>PIN entry unlocked by %1 (logged).</translation>
-    </message>
-</context>
-<context>
-    <name>PinPad</name>
-    <message>
-        <location filename="../../app/screens/widgets/keypad.py" line="+206" />
-        <source>Cancel</source>
-        <translation>Cancel</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>OK</source>
-        <translation>OK</translation>
-    </message>
-    <message>
-        <location line="+38" />
-        <source>Enter your PIN.</source>
-        <translation>Enter your PIN.</translation>
     </message>
 </context>
 <context>

@@ -79,8 +79,10 @@ def test_a_barrel_its_staves_and_their_production_records(db: Database) -> None:
 def test_journal_lines_round_trip() -> None:
     for write in (BarrelWrite(BARREL), BarrelStaveWrite(STAVE_1)):
         assert decode_write(encode_write(write)) == write
-    old_line = encode_write(PieceWrite(piece(3)))  # written before barrels were recorded
-    del old_line["barrel_number"], old_line["stave_number"]
+    old_line = encode_write(PieceWrite(replace(piece(3), operator_name="ana")))
+    assert decode_write(old_line) == PieceWrite(replace(piece(3), operator_name="ana"))
+    # written before barrels and operators were recorded
+    del old_line["barrel_number"], old_line["stave_number"], old_line["operator_name"]
     assert decode_write(old_line) == PieceWrite(
         replace(piece(3), barrel_number=None, stave_number=None)
     )

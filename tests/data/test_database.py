@@ -24,6 +24,7 @@ from app.data.errors import (
     StorageError,
 )
 from app.data.paths import DATABASE_PATH_ENV
+from app.data.pending import AlarmWrite, decode_write, encode_write
 from app.data.recipe import Recipe, TiltMode, recipe_from_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.records import (
@@ -178,6 +179,7 @@ def test_forward_migration_keeps_the_data(tmp_path: Path) -> None:
         database.record_piece(piece(0))
         [record] = database.list_production(T0, T0 + timedelta(hours=1))
         assert record.step_times_s == {}  # v8: a record without step times
+        assert record.operator_name is None  # v10: a record naming no operator
         users = {u.role: u for u in database.list_users()}
         assert users == {}  # v1 files made by older software had their own users
         assert database.recipe_history() == []  # the v2 table exists and works
@@ -354,6 +356,17 @@ def test_the_step_times_are_kept_with_the_record(db: Database) -> None:
     assert db.integrity_problems() == []
 
 
+def test_the_operator_of_the_shift_is_kept_with_the_record(db: Database) -> None:
+    stored = db.record_piece(piece(0, operator_name="Marko Novak"))
+    unnamed = db.record_piece(piece(1))  # a record from before operators were named
+    listed = db.list_production(T0, T0 + timedelta(hours=1))
+    assert listed == [stored, unnamed]
+    assert [r.operator_name for r in listed] == ["Marko Novak", None]
+    for name in ("", " ", "x" * 41):
+        with pytest.raises(RecordError, match="operator_name"):
+            db.record_piece(piece(2, operator_name=name))
+
+
 def test_a_naive_time_is_local_time(db: Database) -> None:
     local = datetime(2024, 5, 2, 10, 30)
     stored = db.record_piece(piece(0, time=local))
@@ -421,6 +434,23 @@ def test_alarm_history_with_filters(db: Database) -> None:
     window = AlarmEventFilter(start=T0 + timedelta(minutes=1), end=T0 + timedelta(minutes=3))
     assert [e.id for e in db.list_alarm_events(window)] == [3, 2]
     assert len(db.list_alarm_events(AlarmEventFilter(limit=2))) == 2
+
+
+def test_an_alarm_event_keeps_its_coded_message(db: Database) -> None:
+    coded = '{"reason": "LATCHED_ERROR", "args": [], "causes": []}'
+    event = alarm(0, "E011", "X", AlarmState.NORMAL, AlarmState.ACTIVE_UNACKED)
+    stored = db.record_alarm_event(replace(event, detail_json=coded))
+    plain = db.record_alarm_event(replace(event, time=event.time + timedelta(minutes=1)))
+    assert db.list_alarm_events() == [plain, stored]
+    assert (stored.detail_json, plain.detail_json) == (coded, None)
+    journalled = replace(stored, id=None)  # a journal line has no id yet
+    line = encode_write(AlarmWrite(journalled))
+    assert decode_write(line) == AlarmWrite(journalled)
+    del line["detail_json"]  # a journal line written before the column
+    assert decode_write(line) == AlarmWrite(replace(journalled, detail_json=None))
+    for damaged in ("[1]", "{", ""):
+        with pytest.raises(RecordError, match="detail_json"):
+            db.record_alarm_event(replace(event, detail_json=damaged))
 
 
 def test_an_invalid_alarm_event_is_refused(db: Database) -> None:

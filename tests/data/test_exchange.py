@@ -259,6 +259,7 @@ def record_at(db: Database, moment: datetime, result: PieceResult = PieceResult.
             alarm_code=None if result is PieceResult.OK else "W_RANGE",
             barrel_number=None if result is PieceResult.OK else 3,  # a barrel's board refused
             stave_number=None if result is PieceResult.OK else 5,
+            operator_name="Marko Novak" if result is PieceResult.OK else None,
         )
     )
 
@@ -295,6 +296,7 @@ def test_export_a_range(production: Database, tmp_path: Path) -> None:
         ("3", "5"),
         ("", ""),
     ]
+    assert [r["operator_name"] for r in rows] == ["Marko Novak", "", "Marko Novak"]
 
 
 def test_export_a_day_in_a_given_zone(production: Database, tmp_path: Path) -> None:

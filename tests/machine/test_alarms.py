@@ -12,6 +12,8 @@ from app.machine.alarms import (
     AlarmCode,
     AlarmManager,
 )
+from app.machine.database_store import alarm_event
+from app.machine.refusals import Reason, Refusal, refusal, refusal_from_json
 from app.machine.snapshot import AlarmState
 
 
@@ -91,3 +93,24 @@ def test_the_pin_lockout_the_database_records_is_the_catalogued_alarm() -> None:
     so its code and text must be the catalogue's W104."""
     entry = CATALOGUE[AlarmCode.PIN_LOCKED]
     assert (entry.code.value, entry.text) == (LOCKOUT_ALARM_CODE, LOCKOUT_ALARM_TEXT)
+
+
+def test_every_transition_keeps_its_message_coded_for_the_history() -> None:
+    """The stored history rows carry the reason and its arguments (and a cause's), so the
+    screens translate them later; a message this software cannot read reads as none."""
+    manager, seen = make()
+    detail = Refusal(
+        Reason.FOLLOWING_ERROR_DETAIL,
+        ("X", "-2.398", "mm", "2"),
+        (refusal(Reason.LATCHED_ERROR),),
+    )
+    manager.raise_alarm("E011", "X", detail)
+    manager.raise_alarm("E010", "Y", "fault code 0x2310")  # a device's own words: no code
+    manager.acknowledge()
+    stored = [alarm_event(t) for t in seen]
+    assert all(event.problems() == [] for event in stored)
+    coded = [refusal_from_json(e.detail_json) for e in stored if e.source == "X"]
+    assert coded == [detail, detail]  # raised, acknowledged
+    assert {e.detail_json for e in stored if e.source == "Y"} == {None}
+    for unreadable in ('{"reason": "NO_SUCH_REASON", "args": [], "causes": []}', "{}", "[", ""):
+        assert refusal_from_json(unreadable) is None

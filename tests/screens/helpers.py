@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QPushButton, QWidget
 from app.machine.snapshot import MachineSnapshot
 from app.machine.states import MachineState
 from app.screens.main_window import MainWindow
+from app.screens.widgets.keypad import Keypad, KeypadMode
 
 WAIT_MS = 60_000
 
@@ -25,6 +26,11 @@ def find_button(parent: QWidget, name: str) -> QPushButton:
     button = parent.findChild(QPushButton, name)
     assert button is not None, f"no button {name!r}"
     return button
+
+
+def is_keypad(widget: object, mode: KeypadMode) -> bool:
+    """Whether ``widget`` is the keypad, open for ``mode`` (a PIN, a number, a fraction)."""
+    return isinstance(widget, Keypad) and widget.mode is mode
 
 
 def wait_for(

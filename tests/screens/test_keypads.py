@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad, parse_number
+from app.screens.widgets.keypad import Keypad, parse_number
 from app.screens.widgets.overlay import top_overlay
 from tests.screens.helpers import find_button
 
@@ -18,7 +18,7 @@ def type_keys(tap, keypad, keys: str) -> None:
 
 
 def test_number_keypad_accepts_a_value_in_range(host, qtbot, tap) -> None:
-    keypad = NumberKeypad("Thickness", 27.0, 25.0, 90.0, "mm")
+    keypad = Keypad.for_number("Thickness", 27.0, 25.0, 90.0, "mm")
     keypad.open_on(host)
     assert top_overlay(host) is keypad
     assert "25" in keypad.range_label.text() and "90" in keypad.range_label.text()
@@ -32,7 +32,7 @@ def test_number_keypad_accepts_a_value_in_range(host, qtbot, tap) -> None:
 
 
 def test_number_keypad_refuses_a_value_out_of_range_and_stays_open(host, qtbot, tap) -> None:
-    keypad = NumberKeypad("Thickness", 27.0, 25.0, 90.0, "mm")
+    keypad = Keypad.for_number("Thickness", 27.0, 25.0, 90.0, "mm")
     keypad.open_on(host)
     values: list[float] = []
     keypad.valueAccepted.connect(values.append)
@@ -51,7 +51,7 @@ def test_number_keypad_refuses_a_value_out_of_range_and_stays_open(host, qtbot, 
 
 
 def test_number_keypad_sign_point_backspace_and_custom_check(host, tap) -> None:
-    keypad = NumberKeypad(
+    keypad = Keypad.for_number(
         "Home X",
         0.0,
         -500.0,
@@ -76,7 +76,7 @@ def test_number_keypad_sign_point_backspace_and_custom_check(host, tap) -> None:
 
 
 def test_integer_keypad_has_no_point_and_positive_range_has_no_sign(host) -> None:
-    keypad = NumberKeypad("Shifts", 3, 1, 6, integer=True)
+    keypad = Keypad.for_number("Shifts", 3, 1, 6, integer=True)
     keypad.open_on(host)
     assert not find_button(keypad, "key_.").isEnabled()
     assert not find_button(keypad, "key_±").isEnabled()
@@ -84,7 +84,7 @@ def test_integer_keypad_has_no_point_and_positive_range_has_no_sign(host) -> Non
 
 
 def test_number_keypad_takes_a_usb_keyboard(host, qtbot) -> None:
-    keypad = NumberKeypad("Length", 950.0, 900.0, 3500.0, "mm")
+    keypad = Keypad.for_number("Length", 950.0, 900.0, 3500.0, "mm")
     keypad.open_on(host)
     qtbot.keyClicks(keypad, "1234,5")
     assert keypad.text == "1234.5"
@@ -94,7 +94,7 @@ def test_number_keypad_takes_a_usb_keyboard(host, qtbot) -> None:
 
 
 def test_optional_keypad_can_be_emptied(host, qtbot, tap) -> None:
-    keypad = NumberKeypad("Barrel diameter", 600.0, 240.0, 4500.0, "mm", optional=True)
+    keypad = Keypad.for_number("Barrel diameter", 600.0, 240.0, 4500.0, "mm", optional=True)
     keypad.open_on(host)
     tap(find_button(keypad, "key_clear"))
     with qtbot.waitSignal(keypad.cleared):
@@ -102,7 +102,7 @@ def test_optional_keypad_can_be_emptied(host, qtbot, tap) -> None:
 
 
 def test_cancel_closes_without_a_value(host, qtbot, tap) -> None:
-    keypad = NumberKeypad("Length", 950.0, 900.0, 3500.0, "mm")
+    keypad = Keypad.for_number("Length", 950.0, 900.0, 3500.0, "mm")
     keypad.open_on(host)
     with qtbot.waitSignal(keypad.finished) as finished:
         tap(find_button(keypad, "cancelButton"))
@@ -122,7 +122,7 @@ def test_fraction_keypad(host, qtbot, tap) -> None:
     def check(numerator: int, denominator: int) -> str:
         return "" if numerator / denominator < 0.5 else "no arc is left at 1/2 or more"
 
-    keypad = FractionKeypad("Length ratio", 1, 4, "0 to below 1/2", check)
+    keypad = Keypad.for_fraction("Length ratio", 1, 4, "0 to below 1/2", check)
     keypad.open_on(host)
     assert keypad.decimal_label.text() == "= 0.2500"
     type_keys(tap, keypad, "2")
@@ -148,7 +148,7 @@ def test_fraction_keypad(host, qtbot, tap) -> None:
 
 
 def test_pin_pad_masks_digits_and_reports_them(host, qtbot, tap) -> None:
-    pad = PinPad("Log in")
+    pad = Keypad.for_pin("Log in")
     pad.open_on(host)
     tap(find_button(pad, "okButton"))
     assert pad.error_label.text()  # empty PIN refused

@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QApplication, QLabel, QPushButton, QSizePolicy, QW
 from app.machine.commands import InjectFault, SelectRecipe
 from app.screens.main_window import SCREEN_KEYS
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
+from app.screens.widgets.keypad import Keypad
 from tests.screens.helpers import wait_for
 
 
@@ -56,9 +56,9 @@ def test_every_screen_fits_1024x768_without_cutting_text(qtbot, window, machine,
         assert window.size() == QSize(1024, 768), f"{key} made the window grow"
         problems += [f"{key}: {p}" for p in cut_texts(window)]
     overlays = [
-        NumberKeypad("Thickness H", 27, 25, 90, "mm"),
-        FractionKeypad("Width ratio W1 : W", 3, 4, "above 0, below 1", lambda n, d: ""),
-        PinPad("Log in: enter your PIN"),
+        Keypad.for_number("Thickness H", 27, 25, 90, "mm"),
+        Keypad.for_fraction("Width ratio W1 : W", 3, 4, "above 0, below 1", lambda n, d: ""),
+        Keypad.for_pin("Log in: enter your PIN"),
         TextKeyboard("Name", "Barrique", layout="qwertz" if language == "sl" else "qwerty"),
     ]
     for overlay in overlays:
@@ -120,7 +120,7 @@ def test_start_stop_home_reset_never_move(qtbot, window, machine, database) -> N
 
 
 def test_a_keypad_keeps_its_size_when_it_shows_an_error(qtbot, host) -> None:
-    pad = NumberKeypad("Thickness H", 27, 25, 90, "mm")
+    pad = Keypad.for_number("Thickness H", 27, 25, 90, "mm")
     pad.open_on(host)
     QApplication.processEvents()
     size = pad.panel.size()

@@ -3,10 +3,13 @@ a whole simulated cycle finish and the counter rise."""
 
 from __future__ import annotations
 
+from datetime import UTC, datetime
+
 from app.machine.states import MachineState
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.lamp import LampColor
-from tests.screens.helpers import find_button, home_from_main_screen, wait_for
+from tests.screens.helpers import WAIT_MS, find_button, home_from_main_screen, wait_for
 
 
 def test_start_is_refused_with_a_reason_until_homed(window) -> None:
@@ -131,6 +134,42 @@ def test_new_shift_asks_first(qtbot, window, tap) -> None:
     assert isinstance(overlay, ConfirmOverlay)
     tap(overlay.cancel_button)
     assert window.overlay() is None
+
+
+def test_a_new_shift_asks_its_operator_for_his_name_and_records_name_him(
+    qtbot, window, database, tap
+) -> None:
+    """The last shift's operator is cleared at New shift; the new one names himself, and the
+    boards cut in his shift carry his name, also while a technician is logged in."""
+    window.session.name_operator("ana")
+    tap(find_button(window, "resetShiftButton"))
+    tap(window.overlay().confirm_button)
+    keyboard = window.overlay()
+    assert isinstance(keyboard, TextKeyboard)
+    assert keyboard.text == "" and window.session.operator_name == ""
+    for char in "marko":
+        tap(find_button(keyboard, f"key_{char}"))
+    tap(find_button(keyboard, "okButton"))
+    assert window.overlay() is None and window.session.operator_name == "marko"
+    window.session.set_user(window.database.authenticate("1234"))  # a technician steps in
+    stop_in_side_a(qtbot, window, database, tap)
+    wait_for(qtbot, window, lambda s: s.state is MachineState.READY)
+    tap(find_button(window, "startButton"))
+    tap(window.overlay().buttons[1])  # Abandon the board: recorded as aborted
+    everything = (datetime(2000, 1, 1, tzinfo=UTC), datetime(2100, 1, 1, tzinfo=UTC))
+    qtbot.waitUntil(lambda: bool(database.list_production(*everything)), timeout=WAIT_MS)
+    records = database.list_production(*everything)
+    assert [(r.result.value, r.operator_name) for r in records] == [("aborted", "marko")]
+    window.session.logout()
+
+
+def test_new_shift_cancelled_at_the_name_leaves_no_name(qtbot, window, tap) -> None:
+    window.session.name_operator("ana")
+    tap(find_button(window, "resetShiftButton"))
+    tap(window.overlay().confirm_button)
+    tap(find_button(window.overlay(), "cancelButton"))
+    assert window.overlay() is None
+    assert window.session.operator_name == "" and window.session.name == "operator"
 
 
 def test_shut_down_asks_then_closes_the_link(qtbot, window, machine, tap) -> None:

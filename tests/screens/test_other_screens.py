@@ -19,11 +19,11 @@ from app.machine.commands import InjectFault
 from app.machine.snapshot import AlarmState
 from app.machine.states import MachineState
 from app.screens.alarm_detail import AlarmDetailOverlay
-from app.screens.texts import alarm_help, machine_text
+from app.screens.texts import alarm_help, alarm_line, machine_text
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button, open_pin_pad, wait_for
+from app.screens.widgets.keypad import KeypadMode
+from tests.screens.helpers import enter_pin, find_button, is_keypad, open_pin_pad, wait_for
 
 
 def keys(tap, overlay, text: str) -> None:
@@ -33,7 +33,7 @@ def keys(tap, overlay, text: str) -> None:
 
 def log_in(qtbot, window, tap, pin: str) -> None:
     open_pin_pad(qtbot, window, tap)
-    assert isinstance(window.overlay(), PinPad)
+    assert is_keypad(window.overlay(), KeypadMode.PIN)
     enter_pin(qtbot, window, tap, pin)
     assert window.overlay() is None
 
@@ -100,7 +100,7 @@ def test_jog_speed_set_on_the_keypad(qtbot, window, tap) -> None:
     open_manual(qtbot, window, tap)
     tap(find_button(window, "jogXYSpeed"))
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     keys(tap, keypad, "42")
     tap(find_button(keypad, "okButton"))
     wait_for(qtbot, window, lambda s: s.jog_xy[0] == 42.0)
@@ -237,7 +237,7 @@ def test_system_is_locked_until_a_technician_pin(qtbot, window, database, tap) -
     assert not find_button(window, "param_machine_height_mm").isEnabled()  # service only
     tap(find_button(window, "param_tool_radius_mm"))
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     keys(tap, keypad, "500")
     tap(find_button(keypad, "okButton"))
     assert keypad.is_open  # the catalogue allows 1 to 150 mm
@@ -282,6 +282,34 @@ def test_switching_to_slovenian_retranslates_the_visible_screen(qtbot, window, t
     tap(window.overlay().buttons[0])
     assert find_button(window, "nav_recipes").text() == "Recipes"
     assert main.start_button.text().endswith("START")
+
+
+def test_the_alarm_history_speaks_the_interface_language(qtbot, window, database) -> None:
+    """History rows keep the message coded: in Slovenian a row reads as the active alarm's
+    line does, with no English left, and its detail view too."""
+    window.link.send(InjectFault("drive_fault", "X"))
+    alarmed = wait_for(qtbot, window, lambda s: bool(s.alarms))
+    alarm = alarmed.alarms[0]
+    assert alarm.detail is not None
+    english = alarm_line(alarm)
+    window.languages.set_language("sl")
+    window.show_screen("alarms")
+    screen = window.page("alarms")
+    screen.refresh_history()
+    slovenian = alarm_line(alarm)
+    assert slovenian != english
+    rows = [screen.history_table.item(r, 2).text() for r in range(screen.history_count)]
+    assert rows and set(rows) == {slovenian}
+    detail = screen.open_history(0)
+    assert detail is not None
+    assert detail.found_label.text().startswith(machine_text(alarm.detail))
+    assert "fault code" not in detail.found_label.text()  # English: "axis X, fault code ..."
+    detail.reject()
+    window.languages.set_language("en")
+    screen.refresh_history()
+    assert {screen.history_table.item(r, 2).text() for r in range(screen.history_count)} == {
+        english
+    }
 
 
 def test_the_pin_pad_is_locked_like_every_other_way_in(qtbot, window, database, tap) -> None:

@@ -7,9 +7,9 @@ from app.data.recipe_profile import RecipeProfile
 from app.geometry.profile_kinds import ProfileKind
 from app.screens.widgets.dialogs import ChoiceOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
-from app.screens.widgets.keypad import NumberKeypad
+from app.screens.widgets.keypad import KeypadMode
 from tests.data import dxf_drawings as drawings
-from tests.screens.helpers import find_button
+from tests.screens.helpers import find_button, is_keypad
 from tests.screens.test_recipes_screen import keys, open_recipes
 
 
@@ -38,7 +38,7 @@ def test_superellipse_chosen_with_its_exponent_on_the_keypad_and_saved(
     assert "2 … 10" in screen.range_labels["exponent"].text()
     tap(screen.field_buttons["exponent"])
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     tap(find_button(keypad, "key_clear"))
     keys(tap, keypad, "12")
     tap(find_button(keypad, "okButton"))

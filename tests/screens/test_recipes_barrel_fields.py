@@ -4,15 +4,15 @@ keypads and checked by the recipe's own rules; the preview shows both sides' til
 from __future__ import annotations
 
 from app.data.recipe import BarrelType
-from app.screens.widgets.keypad import NumberKeypad
-from tests.screens.helpers import find_button
+from app.screens.widgets.keypad import Keypad, KeypadMode
+from tests.screens.helpers import find_button, is_keypad
 from tests.screens.test_recipes_screen import keys, open_recipes
 
 
-def enter(window, tap, field: str, text: str) -> NumberKeypad:
+def enter(window, tap, field: str, text: str) -> Keypad:
     window.page("recipes").edit_field(field)  # the row's tap (it may be scrolled out of view)
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     tap(find_button(keypad, "key_clear"))
     keys(tap, keypad, text)
     tap(find_button(keypad, "okButton"))

@@ -10,8 +10,8 @@ from app.screens.formatting import format_number
 from app.screens.widgets.dialogs import ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser
 from app.screens.widgets.keyboard import TextKeyboard
-from app.screens.widgets.keypad import FractionKeypad, NumberKeypad, PinPad
-from tests.screens.helpers import enter_pin, find_button, wait_for
+from app.screens.widgets.keypad import KeypadMode
+from tests.screens.helpers import enter_pin, find_button, is_keypad, wait_for
 
 
 def open_recipes(window, tap):
@@ -36,7 +36,7 @@ def test_edit_thickness_through_the_keypad_bad_value_refused(qtbot, window, data
 
     tap(find_button(window, "field_thickness_mm"))
     keypad = window.overlay()
-    assert isinstance(keypad, NumberKeypad)
+    assert is_keypad(keypad, KeypadMode.NUMBER)
     assert "25" in keypad.range_label.text() and "90" in keypad.range_label.text()
     keys(tap, keypad, "120")
     tap(find_button(keypad, "okButton"))
@@ -69,7 +69,7 @@ def test_a_width_ratio_that_makes_the_head_too_narrow_is_refused(qtbot, window, 
     original = screen.draft
     tap(find_button(window, "field_width_ratio"))
     keypad = window.overlay()
-    assert isinstance(keypad, FractionKeypad)
+    assert is_keypad(keypad, KeypadMode.FRACTION)
     keys(tap, keypad, "1")
     tap(find_button(keypad, "key_slash"))
     keys(tap, keypad, "5")
@@ -130,7 +130,7 @@ def test_copy_then_delete_with_confirmation_and_technician_pin(
 
     tap(find_button(window, "deleteRecipe"))
     pad = window.overlay()
-    assert isinstance(pad, PinPad)  # an operator may not delete: a technician PIN is asked
+    assert is_keypad(pad, KeypadMode.PIN)  # an operator may not delete: a technician PIN is asked
     enter_pin(qtbot, window, tap, "0000")
     assert "Technician" in pad.error_label.text()
     enter_pin(qtbot, window, tap, "1234")

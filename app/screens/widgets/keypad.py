@@ -1,4 +1,4 @@
-"""Touch keypads: numbers (with the allowed range), fractions, and PINs.
+"""The touch keypad: numbers (with the allowed range), fractions, and PINs, one key layout.
 
 Why the keypad validates: a touch panel has no keyboard to correct a typo with, so the keypad
 shows the allowed range before anything is typed, marks the display red while the value is
@@ -10,9 +10,9 @@ Delete, Enter, Escape), for commissioning with a USB keyboard.
 
 from __future__ import annotations
 
+import enum
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QKeyEvent, QMouseEvent
@@ -79,46 +79,24 @@ def answer_keys(overlay: Overlay, confirm: Callable[[], None]) -> tuple[QPushBut
     return cancel, ok
 
 
-@dataclass
-class KeyBlock:
-    """The one key layout of every keypad (PIN, number, fraction), so that a key is always
-    in the same place under the finger: digits 7-8-9 / 4-5-6 / 1-2-3 from the top, 0 below
-    the 2 with the keypad's own key on each side of it (sign and point, the fraction's
-    slash), and down the right ⌫, C, Cancel, OK."""
+class KeypadMode(enum.Enum):
+    """What the keypad enters; each mode shows its own display above the one key block."""
 
-    grid: QGridLayout
-    keys: dict[str, QPushButton]
-    backspace_button: QPushButton
-    clear_button: QPushButton
-    cancel_button: QPushButton
-    ok_button: QPushButton
+    PIN = "pin"  # digits shown as dots
+    NUMBER = "number"  # one number in a range
+    FRACTION = "fraction"  # numerator / denominator
 
 
-def key_block(
-    overlay: Overlay,
-    press: Callable[[str], None],
-    confirm: Callable[[], None],
-    left: QPushButton | None = None,
-    right: QPushButton | None = None,
-) -> KeyBlock:
-    grid = QGridLayout()
-    grid.setSpacing(8)
-    keys = digit_keys(grid, DIGIT_ROWS, press)
-    keys["0"] = typing_key("0", "0", press)
-    grid.addWidget(keys["0"], 3, 1)
-    for button, column in ((left, 0), (right, 2)):
-        if button is not None:
-            grid.addWidget(button, 3, column)
-    backspace = typing_key("⌫", "back", press, "key_backspace")
-    clear = typing_key("C", "clear", press, "key_clear")
-    cancel, ok = answer_keys(overlay, confirm)
-    for row, button in enumerate((backspace, clear, cancel, ok)):
-        grid.addWidget(button, row, 3)
-    return KeyBlock(grid, keys, backspace, clear, cancel, ok)
+# The keys left and right of the 0 in each mode (None: an empty place).
+SIDE_KEYS: dict[KeypadMode, tuple[tuple[str, str] | None, tuple[str, str] | None]] = {
+    KeypadMode.PIN: (None, None),
+    KeypadMode.NUMBER: (("±", "key_±"), (".", "key_.")),
+    KeypadMode.FRACTION: (("/", "key_slash"), None),
+}
 
 
 class ClickableLabel(QLabel):
-    """A label that reports a tap (the fraction keypad's two displays)."""
+    """A label that reports a tap (the fraction's two displays)."""
 
     clicked = Signal()
 
@@ -140,17 +118,75 @@ def parse_number(text: str) -> float | None:
     return value if math.isfinite(value) else None
 
 
-class NumberKeypad(Overlay):
-    """Enter one number between ``minimum`` and ``maximum`` (inclusive).
+class Keypad(Overlay):
+    """The one touch keypad: a PIN, a number in a range, or a fraction (``KeypadMode``).
 
-    ``valueAccepted(float)`` is emitted when OK is pressed on a valid value; with
-    ``optional`` an empty entry is allowed too and emits ``cleared()``."""
+    Why one widget: the finger finds every key in the same place whatever is entered, and
+    the key block, the error line and the keyboard handling exist once. The key block:
+    digits 7-8-9 / 4-5-6 / 1-2-3 from the top, 0 below the 2 with the mode's own keys on
+    each side of it (sign and point, the fraction's slash), and down the right ⌫, C, Cancel,
+    OK. Open one with :meth:`for_number`, :meth:`for_fraction` or :meth:`for_pin`.
+
+    Signals, by mode: ``valueAccepted(float)`` (and ``cleared()`` for an optional number
+    emptied), ``fractionAccepted(int, int)``, ``pinEntered(str)`` (the caller checks the PIN
+    and answers with :meth:`show_error` or ``accept()``)."""
 
     valueAccepted = Signal(float)  # noqa: N815 (Qt signal naming)
     cleared = Signal()
+    fractionAccepted = Signal(int, int)  # noqa: N815 (Qt signal naming)
+    pinEntered = Signal(str)  # noqa: N815 (Qt signal naming)
 
-    def __init__(
-        self,
+    # The mode's display, made by its constructor: the typed number or the PIN's dots ...
+    display: QLabel
+    # ... or a fraction's two parts (tap one to type into it) and its decimal value.
+    numerator_display: ClickableLabel
+    denominator_display: ClickableLabel
+    decimal_label: QLabel
+
+    def __init__(self, mode: KeypadMode, title: str, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.mode = mode
+        self.setObjectName(OBJECT_NAMES[mode])
+        self.title_label = _label(title, "title")
+        self.range_label = _label("", "caption")
+        self.range_label.setObjectName("rangeLabel")
+        self.error_label = error_label()
+        self.grid = QGridLayout()
+        self.grid.setSpacing(8)
+        self.keys = digit_keys(self.grid, DIGIT_ROWS, self.press)
+        self.keys["0"] = typing_key("0", "0", self.press)
+        self.grid.addWidget(self.keys["0"], 3, 1)
+        for side, column in zip(SIDE_KEYS[mode], (0, 2), strict=True):
+            if side is not None:
+                key, name = side
+                self.keys[key] = typing_key(key, key, self.press, name)
+                self.grid.addWidget(self.keys[key], 3, column)
+        self.backspace_button = typing_key("⌫", "back", self.press, "key_backspace")
+        self.clear_button = typing_key("C", "clear", self.press, "key_clear")
+        self.cancel_button, self.ok_button = answer_keys(self, self.confirm)
+        for row, button in enumerate(
+            (self.backspace_button, self.clear_button, self.cancel_button, self.ok_button)
+        ):
+            self.grid.addWidget(button, row, 3)
+        # Every mode's state, so no attribute is missing in any mode.
+        self.text = ""  # a number as typed
+        self.pin = ""
+        self.parts = ["", ""]  # a fraction's numerator and denominator as typed
+        self.active = 0  # the fraction's part the keys type into
+        self._fresh = [True, True]  # the first key replaces the shown value (per part)
+        self.minimum = self.maximum = 0.0
+        self.unit = ""
+        self.decimals = 0
+        self.integer = self.optional = False
+        self._number_check: NumberCheck | None = None
+        self._fraction_check: FractionCheck | None = None
+        self.max_digits = 0
+
+    # -- the three modes ----------------------------------------------------------------------
+
+    @classmethod
+    def for_number(
+        cls,
         title: str,
         value: float | None,
         minimum: float,
@@ -162,52 +198,96 @@ class NumberKeypad(Overlay):
         check: NumberCheck | None = None,
         optional: bool = False,
         parent: QWidget | None = None,
-    ) -> None:
-        super().__init__(parent)
-        self.setObjectName("numberKeypad")
-        self.optional = optional
-        self.minimum = minimum
-        self.maximum = maximum
-        self.unit = unit
-        self.decimals = 0 if integer else decimals
-        self.integer = integer
-        self._check = check
-        self._fresh = True  # the first key replaces the shown value
-        self.text = "" if value is None else format_number(value, self.decimals)
+    ) -> Keypad:
+        """Enter one number between ``minimum`` and ``maximum`` (inclusive); ``check`` is
+        the caller's own rule ("" or why not); ``optional`` allows an empty entry."""
+        pad = cls(KeypadMode.NUMBER, title, parent)
+        pad.optional = optional
+        pad.minimum, pad.maximum = minimum, maximum
+        pad.unit = unit
+        pad.decimals = 0 if integer else decimals
+        pad.integer = integer
+        pad._number_check = check
+        pad.text = "" if value is None else format_number(value, pad.decimals)
+        pad.display = _label(pad.text, "display")
+        pad.display.setObjectName("display")
+        pad.display.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+        pad.display.setMinimumWidth(360)
+        pad.keys["±"].setEnabled(minimum < 0)
+        pad.keys["."].setEnabled(not integer)
+        pad._lay_out(pad.title_label, pad.range_label, pad.display)
+        return pad
 
-        self.title_label = _label(title, "title")
-        self.range_label = _label("", "caption")
-        self.range_label.setObjectName("rangeLabel")
-        self.display = _label(self.text, "display")
-        self.display.setObjectName("display")
-        self.display.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-        self.display.setMinimumWidth(360)
-        self.error_label = error_label()
+    @classmethod
+    def for_fraction(
+        cls,
+        title: str,
+        numerator: int,
+        denominator: int,
+        allowed_text: str,
+        check: FractionCheck,
+        parent: QWidget | None = None,
+    ) -> Keypad:
+        """Enter a ratio as numerator / denominator (how coopers give them); ``check`` returns
+        "" or why the ratio is not allowed; the decimal value is shown live."""
+        pad = cls(KeypadMode.FRACTION, title, parent)
+        pad._fraction_check = check
+        pad.parts = [str(numerator), str(denominator)]
+        pad.range_label.setText(allowed_text)
+        pad.range_label.setWordWrap(True)
+        pad.numerator_display = ClickableLabel("", "display")
+        pad.numerator_display.setObjectName("numeratorDisplay")
+        pad.denominator_display = ClickableLabel("", "display")
+        pad.denominator_display.setObjectName("denominatorDisplay")
+        for index, display in enumerate((pad.numerator_display, pad.denominator_display)):
+            display.setAlignment(Qt.AlignmentFlag.AlignCenter)
+            display.setMinimumWidth(140)
+            display.clicked.connect(lambda i=index: pad.select(i))
+        pad.decimal_label = _label("", "value")
+        pad.decimal_label.setObjectName("decimalLabel")
+        row = QHBoxLayout()
+        row.addWidget(pad.numerator_display)
+        row.addWidget(_label("/", "bigvalue"))
+        row.addWidget(pad.denominator_display)
+        row.addWidget(pad.decimal_label, 1)
+        pad._lay_out(pad.title_label, pad.range_label, row)
+        return pad
 
-        sign = typing_key("±", "±", self.press)
-        point = typing_key(".", ".", self.press)
-        block = key_block(self, self.press, self.confirm, sign, point)
-        grid = block.grid
-        self.keys = {**block.keys, "±": sign, ".": point}
-        self.backspace_button, self.clear_button = block.backspace_button, block.clear_button
-        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
-        self.keys["±"].setEnabled(minimum < 0)
-        self.keys["."].setEnabled(not integer)
+    @classmethod
+    def for_pin(cls, title: str, max_digits: int = 8, parent: QWidget | None = None) -> Keypad:
+        """Enter a PIN, shown as dots."""
+        pad = cls(KeypadMode.PIN, title, parent)
+        pad.max_digits = max_digits
+        pad.display = _label(" ", "display")
+        pad.display.setObjectName("display")
+        pad.display.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        pad.display.setMinimumWidth(320)
+        pad._lay_out(pad.title_label, pad.display)
+        return pad
 
-        self.panel_layout.addWidget(self.title_label)
-        self.panel_layout.addWidget(self.range_label)
-        self.panel_layout.addWidget(self.display)
+    def _lay_out(self, *parts: QWidget | QHBoxLayout) -> None:
+        """The mode's display above the error line and the key block."""
+        if self.range_label not in parts:  # a PIN has no range
+            self.range_label.setParent(self.panel)
+            self.range_label.hide()
+        for part in parts:
+            if isinstance(part, QHBoxLayout):
+                self.panel_layout.addLayout(part)
+            else:
+                self.panel_layout.addWidget(part)
         self.panel_layout.addWidget(self.error_label)
-        self.panel_layout.addLayout(grid)
+        self.panel_layout.addLayout(self.grid)
         self.retranslate()
         self._refresh()
 
     def retranslate(self) -> None:
         self.cancel_button.setText(self.tr("Cancel"))
         self.ok_button.setText(self.tr("OK"))
-        self.range_label.setText(self.allowed_text())
+        if self.mode is KeypadMode.NUMBER:
+            self.range_label.setText(self.allowed_text())
 
     def allowed_text(self) -> str:
+        """A number's allowed range in words."""
         unit = f" {self.unit}" if self.unit else ""
         low = format_number(self.minimum, max(self.decimals, 6))
         high = format_number(self.maximum, max(self.decimals, 6))
@@ -222,21 +302,40 @@ class NumberKeypad(Overlay):
     # -- typing --------------------------------------------------------------------------------
 
     def press(self, key: str) -> None:
-        """One key of the keypad: a digit, ".", "±", "back" or "clear"."""
+        """One key: a digit, "back", "clear", or the mode's own ("±", ".", "/")."""
+        if self.mode is KeypadMode.PIN:
+            self._press_pin(key)
+        elif self.mode is KeypadMode.NUMBER:
+            self._press_number(key)
+        else:
+            self._press_fraction(key)
+
+    def _press_pin(self, key: str) -> None:
+        if key == "clear":
+            self.pin = ""
+        elif key == "back":
+            self.pin = self.pin[:-1]
+        elif key.isdigit() and len(self.pin) < self.max_digits:
+            self.pin += key
+        self.error_label.setText("")
+        self._refresh()
+
+    def _press_number(self, key: str) -> None:
+        fresh = self._fresh[0]
         if key == "clear":
             self.text = ""
         elif key == "back":
-            self.text = "" if self._fresh else self.text[:-1]
+            self.text = "" if fresh else self.text[:-1]
         elif key == "±":
             if self.minimum < 0:
                 self.text = self.text[1:] if self.text.startswith("-") else "-" + self.text
         elif key == ".":
             if not self.integer:
-                base = "" if self._fresh else self.text
+                base = "" if fresh else self.text
                 if "." not in base:
                     self.text = (base if base not in ("", "-") else base + "0") + "."
         elif key.isdigit():
-            base = "" if self._fresh else self.text
+            base = "" if fresh else self.text
             digits = sum(ch.isdigit() for ch in base)
             fraction = base.split(".", 1)[1] if "." in base else None
             if digits >= MAX_DIGITS or (fraction is not None and len(fraction) >= self.decimals):
@@ -244,142 +343,14 @@ class NumberKeypad(Overlay):
             self.text = base + key
         else:
             return
-        self._fresh = False
+        self._fresh[0] = False
         self.error_label.setText("")
         self._refresh()
 
-    def keyPressEvent(self, event: QKeyEvent) -> None:
-        key = event.key()
-        text = event.text()
-        if text and (text.isdigit() or text in ".,"):
-            self.press("." if text == "," else text)
-        elif text == "-":
-            self.press("±")
-        elif key == Qt.Key.Key_Backspace:
-            self.press("back")
-        elif key == Qt.Key.Key_Delete:
-            self.press("clear")
-        elif key in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
-            self.confirm()
-        else:
-            super().keyPressEvent(event)
-
-    # -- validation -----------------------------------------------------------------------------
-
-    def problem(self) -> str:
-        """Why the typed value cannot be accepted, or "" when it can."""
-        value = parse_number(self.text)
-        if value is None:
-            return self.tr("Enter a number. %1").replace("%1", self.allowed_text())
-        if value < self.minimum or value > self.maximum:
-            unit = f" {self.unit}" if self.unit else ""
-            return (
-                self.tr("%1%2 is outside the allowed range.")
-                .replace("%1", format_number(value, self.decimals))
-                .replace("%2", unit)
-                + " "
-                + self.allowed_text()
-            )
-        if self._check is not None:
-            return self._check(value)
-        return ""
-
-    def _refresh(self) -> None:
-        self.display.setText(self.text or " ")
-        value = parse_number(self.text)
-        invalid = value is not None and not self.minimum <= value <= self.maximum
-        set_style_property(self.display, "invalid", "true" if invalid else "false")
-
-    def confirm(self) -> None:
-        """OK: accept a valid value, or show why not and stay open."""
-        if self.optional and not self.text.strip():
-            self.cleared.emit()
-            self.accept()
+    def _press_fraction(self, key: str) -> None:
+        if key == "/":
+            self.select(1 - self.active)
             return
-        problem = self.problem()
-        if problem:
-            self.error_label.setText(problem)
-            set_style_property(self.display, "invalid", "true")
-            return
-        value = parse_number(self.text)
-        assert value is not None
-        self.valueAccepted.emit(float(int(value)) if self.integer else value)
-        self.accept()
-
-
-class FractionKeypad(Overlay):
-    """Enter a ratio as numerator / denominator (how coopers give them).
-
-    ``check(numerator, denominator)`` returns "" or why the ratio is not allowed; the decimal
-    value is shown live. ``fractionAccepted(int, int)`` is emitted on OK."""
-
-    fractionAccepted = Signal(int, int)  # noqa: N815 (Qt signal naming)
-
-    def __init__(
-        self,
-        title: str,
-        numerator: int,
-        denominator: int,
-        allowed_text: str,
-        check: FractionCheck,
-        parent: QWidget | None = None,
-    ) -> None:
-        super().__init__(parent)
-        self.setObjectName("fractionKeypad")
-        self._check = check
-        self.parts = [str(numerator), str(denominator)]
-        self.active = 0
-        self._fresh = [True, True]
-
-        self.title_label = _label(title, "title")
-        self.range_label = _label(allowed_text, "caption")
-        self.range_label.setObjectName("rangeLabel")
-        self.range_label.setWordWrap(True)
-        self.numerator_display = ClickableLabel("", "display")
-        self.numerator_display.setObjectName("numeratorDisplay")
-        self.denominator_display = ClickableLabel("", "display")
-        self.denominator_display.setObjectName("denominatorDisplay")
-        for index, display in enumerate((self.numerator_display, self.denominator_display)):
-            display.setAlignment(Qt.AlignmentFlag.AlignCenter)
-            display.setMinimumWidth(140)
-            display.clicked.connect(lambda i=index: self.select(i))
-        slash = _label("/", "bigvalue")
-        self.decimal_label = _label("", "value")
-        self.decimal_label.setObjectName("decimalLabel")
-        row = QHBoxLayout()
-        row.addWidget(self.numerator_display)
-        row.addWidget(slash)
-        row.addWidget(self.denominator_display)
-        row.addWidget(self.decimal_label, 1)
-        self.error_label = error_label()
-
-        self.slash_button = key_button("/", name="key_slash")
-        self.slash_button.clicked.connect(lambda: self.select(1 - self.active))
-        block = key_block(self, self.press, self.confirm, self.slash_button)
-        grid = block.grid
-        self.keys = block.keys
-        self.backspace_button, self.clear_button = block.backspace_button, block.clear_button
-        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
-
-        self.panel_layout.addWidget(self.title_label)
-        self.panel_layout.addWidget(self.range_label)
-        self.panel_layout.addLayout(row)
-        self.panel_layout.addWidget(self.error_label)
-        self.panel_layout.addLayout(grid)
-        self.retranslate()
-        self._refresh()
-
-    def retranslate(self) -> None:
-        self.cancel_button.setText(self.tr("Cancel"))
-        self.ok_button.setText(self.tr("OK"))
-
-    def select(self, index: int) -> None:
-        """Make the numerator (0) or the denominator (1) the part the keys type into."""
-        self.active = index
-        self._fresh[index] = True
-        self._refresh()
-
-    def press(self, key: str) -> None:
         part = self.parts[self.active]
         fresh = self._fresh[self.active]
         if key == "clear":
@@ -398,36 +369,86 @@ class FractionKeypad(Overlay):
         self.error_label.setText("")
         self._refresh()
 
+    def select(self, index: int) -> None:
+        """A fraction: make the numerator (0) or the denominator (1) the part typed into."""
+        self.active = index
+        self._fresh[index] = True
+        self._refresh()
+
     def keyPressEvent(self, event: QKeyEvent) -> None:
+        """A USB keyboard: digits, Backspace, Enter everywhere; Delete clears a number or a
+        fraction; point or comma and minus for a number; slash, colon or Tab switch a
+        fraction's part."""
         text = event.text()
         key = event.key()
+        number = self.mode is KeypadMode.NUMBER
+        fraction = self.mode is KeypadMode.FRACTION
         if text and text.isdigit():
             self.press(text)
-        elif text in ("/", ":") or key == Qt.Key.Key_Tab:
-            self.select(1 - self.active)
+        elif number and text in (".", ","):
+            self.press(".")
+        elif number and text == "-":
+            self.press("±")
+        elif fraction and (text in ("/", ":") or key == Qt.Key.Key_Tab):
+            self.press("/")
         elif key == Qt.Key.Key_Backspace:
             self.press("back")
-        elif key == Qt.Key.Key_Delete:
+        elif key == Qt.Key.Key_Delete and (number or fraction):
             self.press("clear")
         elif key in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
             self.confirm()
         else:
             super().keyPressEvent(event)
 
+    # -- validation -----------------------------------------------------------------------------
+
     def values(self) -> tuple[int, int] | None:
+        """A fraction's numerator and denominator, or None while one is empty."""
         if not self.parts[0] or not self.parts[1]:
             return None
         return int(self.parts[0]), int(self.parts[1])
 
     def problem(self) -> str:
+        """Why the typed number or fraction cannot be accepted, or "" when it can."""
+        if self.mode is KeypadMode.FRACTION:
+            return self._fraction_problem()
+        value = parse_number(self.text)
+        if value is None:
+            return self.tr("Enter a number. %1").replace("%1", self.allowed_text())
+        if value < self.minimum or value > self.maximum:
+            unit = f" {self.unit}" if self.unit else ""
+            return (
+                self.tr("%1%2 is outside the allowed range.")
+                .replace("%1", format_number(value, self.decimals))
+                .replace("%2", unit)
+                + " "
+                + self.allowed_text()
+            )
+        if self._number_check is not None:
+            return self._number_check(value)
+        return ""
+
+    def _fraction_problem(self) -> str:
         values = self.values()
         if values is None:
             return self.tr("Enter both the numerator and the denominator.")
         if values[1] == 0:
             return self.tr("The denominator must not be 0.")
-        return self._check(*values)
+        assert self._fraction_check is not None
+        return self._fraction_check(*values)
 
     def _refresh(self) -> None:
+        if self.mode is KeypadMode.PIN:
+            self.display.setText("●" * len(self.pin) or " ")
+        elif self.mode is KeypadMode.NUMBER:
+            self.display.setText(self.text or " ")
+            value = parse_number(self.text)
+            invalid = value is not None and not self.minimum <= value <= self.maximum
+            set_style_property(self.display, "invalid", "true" if invalid else "false")
+        else:
+            self._refresh_fraction()
+
+    def _refresh_fraction(self) -> None:
         self.numerator_display.setText(self.parts[0] or " ")
         self.denominator_display.setText(self.parts[1] or " ")
         set_style_property(self.numerator_display, "active", str(self.active == 0).lower())
@@ -442,68 +463,34 @@ class FractionKeypad(Overlay):
         set_style_property(self.denominator_display, "invalid", invalid)
 
     def confirm(self) -> None:
+        """OK: accept a valid entry (emit the mode's signal), or show why not and stay open."""
+        if self.mode is KeypadMode.PIN:
+            if not self.pin:
+                self.error_label.setText(self.tr("Enter your PIN."))
+                return
+            self.pinEntered.emit(self.pin)
+            return
+        if self.mode is KeypadMode.NUMBER and self.optional and not self.text.strip():
+            self.cleared.emit()
+            self.accept()
+            return
         problem = self.problem()
         if problem:
             self.error_label.setText(problem)
+            if self.mode is KeypadMode.NUMBER:
+                set_style_property(self.display, "invalid", "true")
             return
-        values = self.values()
-        assert values is not None
-        self.fractionAccepted.emit(values[0], values[1])
+        if self.mode is KeypadMode.FRACTION:
+            values = self.values()
+            assert values is not None
+            self.fractionAccepted.emit(values[0], values[1])
+        else:
+            value = parse_number(self.text)
+            assert value is not None
+            self.valueAccepted.emit(float(int(value)) if self.integer else value)
         self.accept()
 
-
-class PinPad(Overlay):
-    """Enter a PIN (digits shown as dots). ``pinEntered(str)`` is emitted on OK."""
-
-    pinEntered = Signal(str)  # noqa: N815 (Qt signal naming)
-
-    def __init__(self, title: str, max_digits: int = 8, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self.setObjectName("pinPad")
-        self.max_digits = max_digits
-        self.pin = ""
-        self.title_label = _label(title, "title")
-        self.display = _label(" ", "display")
-        self.display.setObjectName("display")
-        self.display.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        self.display.setMinimumWidth(320)
-        self.error_label = error_label()
-        block = key_block(self, self.press, self.confirm)
-        grid = block.grid
-        self.keys = block.keys
-        self.backspace_button = block.backspace_button
-        self.cancel_button, self.ok_button = block.cancel_button, block.ok_button
-        self.panel_layout.addWidget(self.title_label)
-        self.panel_layout.addWidget(self.display)
-        self.panel_layout.addWidget(self.error_label)
-        self.panel_layout.addLayout(grid)
-        self.retranslate()
-
-    def retranslate(self) -> None:
-        self.cancel_button.setText(self.tr("Cancel"))
-        self.ok_button.setText(self.tr("OK"))
-
-    def press(self, key: str) -> None:
-        if key == "clear":
-            self.pin = ""
-        elif key == "back":
-            self.pin = self.pin[:-1]
-        elif key.isdigit() and len(self.pin) < self.max_digits:
-            self.pin += key
-        self.error_label.setText("")
-        self.display.setText("●" * len(self.pin) or " ")
-
-    def keyPressEvent(self, event: QKeyEvent) -> None:
-        text = event.text()
-        key = event.key()
-        if text and text.isdigit():
-            self.press(text)
-        elif key == Qt.Key.Key_Backspace:
-            self.press("back")
-        elif key in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
-            self.confirm()
-        else:
-            super().keyPressEvent(event)
+    # -- a PIN being checked by the caller -----------------------------------------------------
 
     def set_busy(self, busy: bool, text: str = "") -> None:
         """While the PIN is being checked: keys off, a word on what is happening."""
@@ -517,8 +504,10 @@ class PinPad(Overlay):
         self.display.setText(" ")
         self.error_label.setText(message)
 
-    def confirm(self) -> None:
-        if not self.pin:
-            self.error_label.setText(self.tr("Enter your PIN."))
-            return
-        self.pinEntered.emit(self.pin)
+
+OBJECT_NAMES: dict[KeypadMode, str] = {
+    KeypadMode.PIN: "pinPad",
+    KeypadMode.NUMBER: "numberKeypad",
+    KeypadMode.FRACTION: "fractionKeypad",
+}
+"""The name each mode's keypad has (the style sheet, the tests and the screenshots find it)."""
