@@ -217,6 +217,11 @@ class ProductionScreen(Screen):
             status = ""
         set_text(self.status_label, status)
         self.export_button.setEnabled(stats is not None)
+        # The figures arrive from the worker between two layout passes: lay them out now, so
+        # no label is drawn clipped at its empty size until the next pass.
+        layout = self.layout()
+        if layout is not None:
+            layout.activate()
 
     def _rate_text(self, stats: ProductionStats) -> str:
         """Finished staves per hour over the part of the range that has passed."""
