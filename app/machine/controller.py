@@ -48,6 +48,7 @@ from app.machine.manual_move import ManualMove
 from app.machine.pendant.jog_sources import PendantJog
 from app.machine.permissions import may, may_start_spindle
 from app.machine.planner.keepout import KeepOutRefused, TableKeepOut
+from app.machine.planner.limits import MAX_OVERRIDE_PCT
 from app.machine.preview import PlanPublisher
 from app.machine.process_params import jog_speeds, motion_limits, stave_limits
 from app.machine.recipe_on_machine import restore
@@ -309,7 +310,7 @@ class MachineController(CycleControl):
         self._publish_recipe_preview()
 
     def _set_feed_override(self, percent: float) -> None:
-        if not 0.0 <= percent <= 120.0:
+        if not 0.0 <= percent <= MAX_OVERRIDE_PCT:
             self._refuse(refusal(Reason.FEED_OVERRIDE_RANGE, percent))
             return
         self.feed_override_pct = percent
@@ -437,6 +438,10 @@ class MachineController(CycleControl):
     @property
     def last_cycle_time_s(self) -> float | None:
         return self.production.last_cycle_time_s
+
+    @property
+    def last_wait_s(self) -> float | None:
+        return self.production.last_wait_s
 
     @property
     def last_step_times_s(self) -> dict[str, float]:
