@@ -188,6 +188,14 @@ class MachineSnapshot:
         raise KeyError(name)
 
     @property
+    def last_work_time_s(self) -> float | None:
+        """The last cycle's time without its wait for the board (from the board's arrival to
+        the clamps open)."""
+        if self.last_cycle_time_s is None:
+            return None
+        return max(self.last_cycle_time_s - (self.last_wait_s or 0.0), 0.0)
+
+    @property
     def all_homed(self) -> bool:
         return all(a.homed for a in self.axes)
 

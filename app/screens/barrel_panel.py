@@ -37,7 +37,7 @@ class BarrelPanel(QFrame):
         self.context = context
         self.view: BarrelView | None = None
         self.drawing = BarrelDrawing()
-        self.staves_label = styled_label("", "value", "barrelStaves")
+        self.staves_label = styled_label("", "figure", "barrelStaves")
         self.gap_label = styled_label("", "caption", "barrelGap")
         self.left_label = styled_label("", "caption", "barrelLeft")
         self.question_label = styled_label("", "message", "closingQuestion")
@@ -55,8 +55,6 @@ class BarrelPanel(QFrame):
         self.card_button = touch_button("barrelCardButton")
         self.card_button.clicked.connect(self.export_card)
 
-        for label in (self.gap_label, self.left_label):
-            label.setWordWrap(True)
         column = QVBoxLayout()  # beside the drawing: the drawing keeps the panel's height
         column.setSpacing(4)
         column.addWidget(self.staves_label)
@@ -140,14 +138,12 @@ class BarrelPanel(QFrame):
             gap = f"{format_number(view.gap_mm, 1)} mm"
             set_text(
                 self.gap_label,
-                self.tr("Left: %1 of the perimeter (gap %2)")
-                .replace("%1", left_mm)
-                .replace("%2", gap),
+                self.tr("Left %1 · gap %2").replace("%1", left_mm).replace("%2", gap),
             )
             left = "—" if view.staves_left is None else str(view.staves_left)
             set_text(
                 self.left_label,
-                self.tr("About %1 more staves at the mean width").replace("%1", left),
+                self.tr("About %1 more staves").replace("%1", left),
             )
         if view.closing_width_mm is not None:
             width = f"{format_number(view.closing_width_mm, 1)} mm"

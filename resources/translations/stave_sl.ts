@@ -966,7 +966,7 @@
 <context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+91"/>
+        <location filename="../../app/screens/barrel_panel.py" line="+89"/>
         <source>Closing stave now</source>
         <translation>Zapri sod zdaj</translation>
     </message>
@@ -977,12 +977,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+73"/>
+        <location line="+71"/>
         <source>Cooper&apos;s card</source>
         <translation>Sodarjeva kartica</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-42"/>
         <source>No barrel is being raised</source>
         <translation>Noben sod ni v delu</translation>
     </message>
@@ -1023,13 +1023,13 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>Left: %1 of the perimeter (gap %2)</source>
-        <translation>Ostane: %1 oboda (reža %2)</translation>
+        <source>Left %1 · gap %2</source>
+        <translation>Ostane %1 · reža %2</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>About %1 more staves at the mean width</source>
-        <translation>Še približno %1 dog povprečne širine</translation>
+        <location line="+5"/>
+        <source>About %1 more staves</source>
+        <translation>Še približno %1 dog</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -1061,6 +1061,29 @@
         <location line="-65"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
+    </message>
+</context>
+<context>
+    <name>FeedOverride</name>
+    <message>
+        <location filename="../../app/screens/widgets/feed_override.py" line="+71"/>
+        <source>Feed override</source>
+        <translation>Korekcija podajanja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slower by 10 %</source>
+        <translation>Počasneje za 10 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Faster by 10 %</source>
+        <translation>Hitreje za 10 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The recipe&apos;s feed</source>
+        <translation>Podajanje iz recepta</translation>
     </message>
 </context>
 <context>
@@ -2008,12 +2031,12 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217"/>
+        <location filename="../../app/screens/main_screen.py" line="+270"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>Recipe</source>
         <translation>Recept</translation>
     </message>
@@ -2053,7 +2076,7 @@
         <translation>Ponastavi</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-17"/>
         <source>Put a board in
 (simulation)</source>
         <translation>Vstavi desko
@@ -2067,7 +2090,7 @@
 (simulacija)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>New
 shift</source>
         <translation>Nova
@@ -2085,18 +2108,24 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+167"/>
         <source>Last width</source>
         <translation>Zadnja širina</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-166"/>
         <source>Last cycle</source>
         <translation>Zadnji cikel</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>Cycle</source>
+        <translation>Cikel</translation>
+    </message>
+    <message>
         <location line="+1"/>
-        <source>Elapsed</source>
-        <translation>Pretečeno</translation>
+        <source>Waited</source>
+        <translation>Čakanje</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2104,7 +2133,7 @@ izmena</translation>
         <translation>Preostalo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>All inputs and outputs</source>
         <translation>Vsi vhodi in izhodi</translation>
     </message>
@@ -2119,7 +2148,7 @@ izmena</translation>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
@@ -2169,14 +2198,74 @@ izmena</translation>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+55"/>
+        <source>+%1 waiting</source>
+        <translation>+%1 čakanja</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Board width</source>
+        <translation>Širina deske</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Take the finished board off</source>
         <translation>Odstranite obdelano desko</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>No cycle running</source>
         <translation>Cikel ne teče</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Move to go</source>
+        <translation>Do konca giba</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step to go</source>
+        <translation>Do konca koraka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Path speed</source>
+        <translation>Hitrost po poti</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Homing: moving clear of the board</source>
+        <translation>Referenciranje: umik od deske</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Homing axis %1</source>
+        <translation>Referenciranje osi %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Homing done</source>
+        <translation>Referenciranje končano</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Axis %1</source>
+        <translation>Os %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>homed ✓</source>
+        <translation>referencirana ✓</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>homing…</source>
+        <translation>se referencira…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>waiting</source>
+        <translation>čaka</translation>
     </message>
 </context>
 <context>
@@ -3603,7 +3692,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231"/>
+        <location filename="../../app/screens/system_screen.py" line="+221"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>

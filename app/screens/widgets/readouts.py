@@ -168,11 +168,19 @@ class ValueTile(QFrame):
         self.setObjectName("panel")
         self.caption_label = styled_label(caption, "caption")
         self.value_label = styled_label("—", role, name)
+        self._value_row = QHBoxLayout()
+        self._value_row.setSpacing(8)
+        self._value_row.addWidget(self.value_label)
+        self._value_row.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(10, 4, 10, 6)
         layout.setSpacing(0)
         layout.addWidget(self.caption_label)
-        layout.addWidget(self.value_label)
+        layout.addLayout(self._value_row)
+
+    def add_note(self, note: QLabel) -> None:
+        """A small text beside the value (what the value leaves out), on its baseline."""
+        self._value_row.insertWidget(1, note, 0, Qt.AlignmentFlag.AlignBottom)
 
     def set_caption(self, caption: str) -> None:
         set_text(self.caption_label, caption)
