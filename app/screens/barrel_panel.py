@@ -27,7 +27,7 @@ from app.screens.formatting import format_number
 from app.screens.widgets.barrel_drawing import BarrelDrawing
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
-from app.screens.widgets.readouts import set_text, styled_label
+from app.screens.widgets.readouts import ElidedLinesLabel, set_text, styled_label
 
 
 class BarrelPanel(QFrame):
@@ -40,10 +40,11 @@ class BarrelPanel(QFrame):
         self.staves_label = styled_label("", "figure", "barrelStaves")
         self.gap_label = styled_label("", "caption", "barrelGap")
         self.left_label = styled_label("", "caption", "barrelLeft")
-        self.question_label = styled_label("", "message", "closingQuestion")
-        self.question_label.setWordWrap(True)
-        self.close_now_button = touch_button("closeNowButton")
-        self.one_more_button = touch_button("oneMoreButton")
+        # Two lines kept, wrapped to the column's width and never widening it.
+        self.question_label = ElidedLinesLabel("message", "closingQuestion", lines=2)
+        # Narrow padding: the two answers share the panel's width (half the main screen's).
+        self.close_now_button = touch_button("closeNowButton", "step")
+        self.one_more_button = touch_button("oneMoreButton", "step")
         for button, choice in (
             (self.close_now_button, BoardChoice.CLOSE_NOW),
             (self.one_more_button, BoardChoice.CUT_ORDINARY),
@@ -86,7 +87,7 @@ class BarrelPanel(QFrame):
         self.show_barrel(None, None)
 
     def retranslate(self) -> None:
-        self.close_now_button.setText(self.tr("Closing stave now"))
+        self.close_now_button.setText(self.tr("Closing stave"))
         self.one_more_button.setText(self.tr("One more stave"))
         self.card_button.setText(self.tr("Cooper's card"))
         self._texts()
@@ -149,7 +150,7 @@ class BarrelPanel(QFrame):
             width = f"{format_number(view.closing_width_mm, 1)} mm"
             set_text(
                 self.question_label,
-                self.tr("One stave of %1 closes the barrel. The next board:").replace("%1", width),
+                self.tr("A stave of %1 closes it. Next board:").replace("%1", width),
             )
 
     def export_card(self, directory: Path | None = None) -> None:

@@ -59,6 +59,7 @@ from app.screens.widgets.readouts import (
 from app.screens.widgets.step_times_bar import StepTimesBar
 
 LEFT_WIDTH_PX = 268
+FIGURE_SAMPLE = "8888 mm/s"  # the widest figure of the cycle panel
 
 
 class MainScreen(Screen):
@@ -206,6 +207,8 @@ class MainScreen(Screen):
             figures.addWidget(value, 2 * line + 1, column)
         for column in range(3):
             figures.setColumnStretch(column, 1)
+        self._figure_values = tuple(value for _caption, value in pairs)
+        self._fit_figures()
         self.progress = QProgressBar()
         self.progress.setObjectName("cycleProgress")
         self.progress.setRange(0, 1000)
@@ -237,7 +240,7 @@ class MainScreen(Screen):
 
         self.plan_view = PlanView()
         self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-        self.plan_view.setMinimumHeight(120)
+        self.plan_view.setMinimumHeight(100)  # the stave is long and flat: 100 px show it
 
         right = QVBoxLayout()
         right.setSpacing(8)
@@ -248,11 +251,13 @@ class MainScreen(Screen):
         views = QVBoxLayout()  # the plan over the barrel being raised
         views.setSpacing(8)
         views.addWidget(self.plan_view, 1)
-        views.addWidget(self.barrel_panel)
+        views.addWidget(self.barrel_panel, 1)  # on a larger panel the drawing grows too
         middle = QHBoxLayout()
         middle.setSpacing(8)
-        middle.addWidget(cycle_panel, 1)
-        middle.addLayout(views, 1)
+        # The cycle panel at about its own width; the plan and the barrel (whose closing
+        # question's two answers are the widest row) take the rest.
+        middle.addWidget(cycle_panel, 4)
+        middle.addLayout(views, 5)
         right.addLayout(middle, 1)
         right.addLayout(step_times)
 
@@ -276,6 +281,13 @@ class MainScreen(Screen):
             set_text(self.load_button, self.tr("Replace the board\n(simulation)"))
         else:
             set_text(self.load_button, self.tr("Put a board in\n(simulation)"))
+
+    def _fit_figures(self) -> None:
+        """Each figure as wide as its widest value ("8888 mm/s"), whatever it shows now: the
+        figures change ten times a second, and the panel must not change width with them."""
+        for label in self._figure_values:
+            label.ensurePolished()
+            label.setMinimumWidth(label.fontMetrics().horizontalAdvance(FIGURE_SAMPLE) + 2)
 
     @staticmethod
     def _keep_place(widget: QWidget) -> None:
@@ -545,6 +557,7 @@ class MainScreen(Screen):
         self.plan_view.set_scale(scale)
         self.io_strip.set_lamp_diameter(round(IO_LAMP_PX * scale))
         self.step_times_bar.set_scale(scale)
+        self._fit_figures()
 
     def _enable(self, button: QPushButton, command: str) -> None:
         reason = refusal(self.snapshot, command)

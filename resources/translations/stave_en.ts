@@ -966,9 +966,9 @@
 <context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+89" />
-        <source>Closing stave now</source>
-        <translation>Closing stave now</translation>
+        <location filename="../../app/screens/barrel_panel.py" line="+90" />
+        <source>Closing stave</source>
+        <translation>Closing stave</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1033,8 +1033,8 @@
     </message>
     <message>
         <location line="+6" />
-        <source>One stave of %1 closes the barrel. The next board:</source>
-        <translation>One stave of %1 closes the barrel. The next board:</translation>
+        <source>A stave of %1 closes it. Next board:</source>
+        <translation>A stave of %1 closes it. Next board:</translation>
     </message>
     <message>
         <location line="+23" />
@@ -2031,12 +2031,12 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+270" />
+        <location filename="../../app/screens/main_screen.py" line="+275" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+25" />
         <source>Recipe</source>
         <translation>Recipe</translation>
     </message>
@@ -2076,7 +2076,7 @@
         <translation>Reset</translation>
     </message>
     <message>
-        <location line="-17" />
+        <location line="-24" />
         <source>Put a board in
 (simulation)</source>
         <translation>Put a board in
@@ -2090,7 +2090,7 @@
 (simulation)</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+28" />
         <source>New
 shift</source>
         <translation>New

@@ -966,8 +966,8 @@
 <context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+89"/>
-        <source>Closing stave now</source>
+        <location filename="../../app/screens/barrel_panel.py" line="+90"/>
+        <source>Closing stave</source>
         <translation>Zapri sod zdaj</translation>
     </message>
     <message>
@@ -979,7 +979,7 @@
         <location line="+1"/>
         <location line="+71"/>
         <source>Cooper&apos;s card</source>
-        <translation>Sodarjeva kartica</translation>
+        <translation>Kartica soda</translation>
     </message>
     <message>
         <location line="-42"/>
@@ -1033,8 +1033,8 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>One stave of %1 closes the barrel. The next board:</source>
-        <translation>Doga širine %1 zapre sod. Naslednja deska:</translation>
+        <source>A stave of %1 closes it. Next board:</source>
+        <translation>Doga širine %1 ga zapre. Naslednja deska:</translation>
     </message>
     <message>
         <location line="+23"/>
@@ -2031,12 +2031,12 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+270"/>
+        <location filename="../../app/screens/main_screen.py" line="+275"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+25"/>
         <source>Recipe</source>
         <translation>Recept</translation>
     </message>
@@ -2076,7 +2076,7 @@
         <translation>Ponastavi</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-24"/>
         <source>Put a board in
 (simulation)</source>
         <translation>Vstavi desko
@@ -2090,7 +2090,7 @@
 (simulacija)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+28"/>
         <source>New
 shift</source>
         <translation>Nova
@@ -2220,17 +2220,17 @@ izmena</translation>
     <message>
         <location line="+10"/>
         <source>Move to go</source>
-        <translation>Do konca giba</translation>
+        <translation>Ostanek giba</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Step to go</source>
-        <translation>Do konca koraka</translation>
+        <translation>Ostanek koraka</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Path speed</source>
-        <translation>Hitrost po poti</translation>
+        <translation>Hitrost</translation>
     </message>
     <message>
         <location line="+10"/>

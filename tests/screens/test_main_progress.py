@@ -5,9 +5,12 @@ machine applies; all of it within 1024x768."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QSize
+from PySide6.QtCore import QRect, QSize, Qt
 from PySide6.QtWidgets import QApplication
 
+from app.geometry.barrel_section import BarrelSection
+from app.machine.barrel_set import BarrelSet
+from app.machine.barrel_view import barrel_view
 from app.machine.commands import LoadBoard, SelectRecipe, StartBarrel
 from app.machine.states import CycleStep, MachineState
 from app.screens.formatting import format_duration
@@ -139,7 +142,7 @@ def test_the_running_main_screen_fits_1024x768_in_both_languages(
     for language in ("en", "sl"):
         window.languages.set_language(language)
         wait_for(qtbot, window, lambda s: _step(s, CycleStep.CUTTING_A))
-        QApplication.processEvents()
+        qtbot.wait(50)
         assert window.size() == QSize(1024, 768)
         assert main.barrel_panel.isVisible() and main.feed_override.isVisible()
         assert cut_texts(main) == [], language
@@ -147,4 +150,28 @@ def test_the_running_main_screen_fits_1024x768_in_both_languages(
         assert main.minimumSizeHint().height() <= main.height() - TOP_BAR_GROWTH_PX
         for label in (main.barrel_panel.gap_label, main.barrel_panel.left_label):
             assert label.sizeHint().height() <= label.height(), "a barrel line is clipped"
+    # The closing question, as the machine puts it 13 staves into a round 690 mm barrel (its
+    # view built by the machine layer's own function), with both answers whole in both
+    # languages.
+    window.poller.stop()
+    shown = window.poller.snapshot
+    barrel = BarrelSet(BarrelSection.circle(690.0), 75.0)
+    for _ in range(13):
+        barrel = barrel.with_stave(barrel.place(160.0))
+    asking = barrel_view(barrel, None, None)
+    assert asking.ask_closing
+    for language in ("en", "sl"):
+        window.languages.set_language(language)
+        qtbot.wait(50)  # the tap on the language button is an event of its own
+        main.barrel_panel.show_barrel(asking, shown)
+        qtbot.wait(50)
+        assert window.size() == QSize(1024, 768)
+        assert main.barrel_panel.close_now_button.isVisible()
+        assert cut_texts(main.barrel_panel) == [], language
+        question = main.barrel_panel.question_label
+        wrapped = question.fontMetrics().boundingRect(
+            QRect(0, 0, question.width(), 1000), Qt.TextFlag.TextWordWrap, question.text()
+        )
+        lines = round(wrapped.height() / question.fontMetrics().height())
+        assert lines <= question.lines, f"{language}: the question is cut"
     window.languages.set_language("en")

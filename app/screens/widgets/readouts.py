@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (
     QFrame,
     QHBoxLayout,
     QLabel,
+    QSizePolicy,
     QVBoxLayout,
     QWidget,
 )
@@ -61,7 +62,16 @@ class FixedLinesLabel(QLabel):
 
 class ElidedLinesLabel(FixedLinesLabel):
     """A FixedLinesLabel that ends its last line with an ellipsis when the text needs more
-    lines (a long recipe name): ``text()`` stays the whole text."""
+    lines (a long recipe name): ``text()`` stays the whole text. It takes the width its
+    layout gives it and never asks for more (nor for a height from its width: its height is
+    fixed), so a long text cannot widen the screen."""
+
+    def __init__(self, role: str, name: str, lines: int = 2, parent: QWidget | None = None):
+        super().__init__(role, name, lines, parent)
+        policy = self.sizePolicy()
+        policy.setHorizontalPolicy(QSizePolicy.Policy.Ignored)
+        policy.setHeightForWidth(False)
+        self.setSizePolicy(policy)
 
     def paintEvent(self, event: QPaintEvent) -> None:
         text = self.text()
