@@ -1,8 +1,14 @@
 """Main screen (automatic mode, the default after power-on; docs/MACHINE.md section 5).
 
 Recipe selection (previous/next with its number, or a list), big Start and Stop, Home and
-Reset, the axes in big digits (unhomed positions look different), piece counters, the last
-width and cycle time, elapsed and remaining time of the running cycle, and the live plan view.
+Reset, the axes in big digits (unhomed positions look different), the I/O strip, piece
+counters, the board's width once measured, the last cycle's time with its wait for the board
+apart, the cycle panel (step; cycle time, wait, remaining; distance to go and path speed, or
+during homing the axes done and to come; progress only along the plan; the feed override
+while a cycle runs), the live plan view, the barrel panel, the last cycle's step times.
+
+Everything shown comes computed from the snapshot: the screen formats figures and never
+derives motion from them (distance, speed, progress are the machine's).
 
 Why Start and Stop are enabled from ``snapshot.allowed``: the machine decides what is allowed
 (one rule for the buttons and the machine); a disabled Start says why in words below it, so
