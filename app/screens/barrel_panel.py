@@ -42,6 +42,7 @@ class BarrelPanel(QFrame):
         self.left_label = styled_label("", "caption", "barrelLeft")
         # Two lines kept, wrapped to the column's width and never widening it.
         self.question_label = ElidedLinesLabel("message", "closingQuestion", lines=2)
+        self.question_label.never_widen()
         # Narrow padding: the two answers share the panel's width (half the main screen's).
         self.close_now_button = touch_button("closeNowButton", "step")
         self.one_more_button = touch_button("oneMoreButton", "step")

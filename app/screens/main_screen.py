@@ -183,6 +183,7 @@ class MainScreen(Screen):
         cycle_panel = QFrame()
         cycle_panel.setObjectName("panel")
         self.step_label = ElidedLinesLabel("value", "cycleStep", lines=1)
+        self.step_label.never_widen()
         figures = QGridLayout()
         figures.setHorizontalSpacing(8)
         figures.setVerticalSpacing(0)
@@ -524,7 +525,7 @@ class MainScreen(Screen):
 
     def _homing_text(self, homing: HomingView) -> str:
         if homing.clearing:
-            return self.tr("Homing: moving clear of the board")
+            return self.tr("Moving clear of the board")
         if homing.current:
             return self.tr("Homing axis %1").replace("%1", homing.current)
         return self.tr("Homing done")

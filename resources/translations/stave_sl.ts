@@ -966,7 +966,7 @@
 <context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+90"/>
+        <location filename="../../app/screens/barrel_panel.py" line="+91"/>
         <source>Closing stave</source>
         <translation>Zapri sod zdaj</translation>
     </message>
@@ -2031,7 +2031,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+275"/>
+        <location filename="../../app/screens/main_screen.py" line="+282"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2234,8 +2234,8 @@ izmena</translation>
     </message>
     <message>
         <location line="+10"/>
-        <source>Homing: moving clear of the board</source>
-        <translation>Referenciranje: umik od deske</translation>
+        <source>Moving clear of the board</source>
+        <translation>Umik od deske</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -15,6 +15,7 @@ from app.machine.commands import LoadBoard, SelectRecipe, StartBarrel
 from app.machine.states import CycleStep, MachineState
 from app.screens.formatting import format_duration
 from app.screens.main_window import MainWindow
+from app.screens.texts import step_text
 from tests.screens.helpers import find_button, home_from_main_screen, wait_for
 from tests.screens.test_layout import cut_texts
 
@@ -148,6 +149,15 @@ def test_the_running_main_screen_fits_1024x768_in_both_languages(
         assert cut_texts(main) == [], language
         # Room kept for taller top-bar buttons.
         assert main.minimumSizeHint().height() <= main.height() - TOP_BAR_GROWTH_PX
+        # Every step the line can say, whole on its one line.
+        step_texts = [step_text(step) for step in CycleStep] + [
+            main.tr("Take the finished board off"),
+            main.tr("No cycle running"),
+            main.tr("Moving clear of the board"),
+        ]
+        metrics = main.step_label.fontMetrics()
+        too_long = [t for t in step_texts if metrics.horizontalAdvance(t) > main.step_label.width()]
+        assert too_long == [], language
         for label in (main.barrel_panel.gap_label, main.barrel_panel.left_label):
             assert label.sizeHint().height() <= label.height(), "a barrel line is clipped"
     # The closing question, as the machine puts it 13 staves into a round 690 mm barrel (its

@@ -62,12 +62,11 @@ class FixedLinesLabel(QLabel):
 
 class ElidedLinesLabel(FixedLinesLabel):
     """A FixedLinesLabel that ends its last line with an ellipsis when the text needs more
-    lines (a long recipe name): ``text()`` stays the whole text. It takes the width its
-    layout gives it and never asks for more (nor for a height from its width: its height is
-    fixed), so a long text cannot widen the screen."""
+    lines (a long recipe name): ``text()`` stays the whole text."""
 
-    def __init__(self, role: str, name: str, lines: int = 2, parent: QWidget | None = None):
-        super().__init__(role, name, lines, parent)
+    def never_widen(self) -> None:
+        """Take the width the layout gives and never ask for more (nor for a height from the
+        width: the height is fixed), so that a long text cannot widen its screen."""
         policy = self.sizePolicy()
         policy.setHorizontalPolicy(QSizePolicy.Policy.Ignored)
         policy.setHeightForWidth(False)
