@@ -105,15 +105,23 @@ class BarrelPanel(QFrame):
             (self.close_now_button, BoardChoice.CLOSE_NOW),
             (self.one_more_button, BoardChoice.CUT_ORDINARY),
         ):
-            button.setVisible(asking)
             button.setEnabled(not choose_reason)
             button.setChecked(view is not None and view.choice is choice)
-        self.question_label.setVisible(asking)
-        self.gap_label.setVisible(view is not None and not asking)
-        self.left_label.setVisible(view is not None and not asking)
-        self.drawing.setVisible(view is not None)
-        self.start_button.setVisible(not asking)
-        self.card_button.setVisible(view is not None and not asking)
+        shown = {
+            self.close_now_button: asking,
+            self.one_more_button: asking,
+            self.question_label: asking,
+            self.gap_label: view is not None and not asking,
+            self.left_label: view is not None and not asking,
+            self.drawing: view is not None,
+            self.start_button: not asking,
+            self.card_button: view is not None and not asking,
+        }
+        # What goes away first, then what comes: never both at once, not even for one
+        # layout pass (the panel would grow the main screen past the panel's height).
+        for widget, visible in sorted(shown.items(), key=lambda item: item[1]):
+            if widget.isVisibleTo(self) != visible:
+                widget.setVisible(visible)
         self._texts()
 
     def _texts(self) -> None:
