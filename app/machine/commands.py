@@ -8,8 +8,10 @@ one; a refused command raises an event with the reason, visible in the next snap
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 from app.machine.barrel_set import BoardChoice
+from app.machine.planner.limits import MAX_OVERRIDE_PCT
 
 
 @dataclass(frozen=True)
@@ -114,7 +116,11 @@ class SetSpindle:
 
 @dataclass(frozen=True)
 class SetFeedOverride:
-    percent: float  # 0 to 120
+    """The feed of every planned move, in percent of the recipe's (0 holds on the path).
+    Kept across cycles; applied at once, without a jump in speed."""
+
+    percent: float  # 0 to MAX_PCT
+    MAX_PCT: ClassVar[float] = MAX_OVERRIDE_PCT  # the planner budgets for this much
 
 
 @dataclass(frozen=True)

@@ -258,6 +258,10 @@ class MachineController(OperatorRoom):
         return self.production.last_cycle_time_s
 
     @property
+    def last_wait_s(self) -> float | None:
+        return self.production.last_wait_s
+
+    @property
     def last_step_times_s(self) -> dict[str, float]:
         return self.production.last_step_times_s
 

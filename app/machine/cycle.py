@@ -140,6 +140,8 @@ class AutomaticCycle:
         self._entered_last_cut = False
         self._clamps_released = False
         self._spindle_ran = False  # the spindle has reported running since it was switched on
+        # When the board was there and the cycle's work began (None: still waiting for it).
+        self.board_arrived_s: float | None = None
 
     @property
     def is_continuation(self) -> bool:
@@ -160,6 +162,8 @@ class AutomaticCycle:
 
     # -- helpers ---------------------------------------------------------------------------
     def _go(self, step: CycleStep, now_s: float) -> None:
+        if self.board_arrived_s is None and step is not CycleStep.WAIT_FOR_PART:
+            self.board_arrived_s = now_s
         self.step = step
         self._step_started_s = now_s
 
@@ -180,6 +184,31 @@ class AutomaticCycle:
     def moving(self) -> bool:
         """True while the path executor drives the axes."""
         return self.executor is not None and not self.executor.done
+
+    def waited_s(self, now_s: float) -> float:
+        """The time from Start until the board was there (so far, while still waiting)."""
+        arrived_s = now_s if self.board_arrived_s is None else self.board_arrived_s
+        return max(arrived_s - self.started_s, 0.0)
+
+    def working_s(self, now_s: float) -> float:
+        """The cycle's time without the wait for the board: from its arrival to now."""
+        return 0.0 if self.board_arrived_s is None else max(now_s - self.board_arrived_s, 0.0)
+
+    def path_progress(self) -> float | None:
+        """0 .. 1 along the planned path while the axes follow it; None while the step has
+        no known length (waiting for a board, a sensor, the gauge, the spindle) or while the
+        cycle is stopping (its end is not the plan's)."""
+        executor = self.following_executor
+        if self._stop_requested or executor is None:
+            return None
+        return executor.progress
+
+    @property
+    def following_executor(self) -> PathExecutor | None:
+        """The executor the axes follow now (None before the path starts and after it)."""
+        executor = self.executor
+        following = self.step is CycleStep.RETRACTING or self.step in _PATH_STEPS
+        return executor if following and executor is not None and not executor.done else None
 
     def remaining_s(self) -> float:
         if self.executor is not None:

@@ -202,6 +202,45 @@ class PathExecutor:
             return math.inf
         return here + sum(self._future_durations()[self._index + 1 :])
 
+    @property
+    def distance_to_go_mm(self) -> float:
+        """X-Y path length left in the current move (mm): to its end while running or
+        holding, to the rest point while stopping; 0 on a tilt-only move, a dwell, or once
+        done, stopped or aborted."""
+        if self._state in (ExecutorState.DONE, ExecutorState.STOPPED, ExecutorState.ABORTED):
+            return 0.0
+        s_dof = self._chunk.chunk.s_dof
+        if s_dof is None:
+            return 0.0
+        s_now = self._current_dof_state()[0][0]
+        if self._state is ExecutorState.STOPPING:
+            s_end = state_at(self._segment, float(self._segment.duration))[0][0]
+        else:
+            s_end = s_dof.end
+        return abs(s_end - s_now)
+
+    @property
+    def phase_distance_to_go_mm(self) -> float:
+        """X-Y path length left in the current phase (a side's cut with its lead-in and
+        lead-out and every pass, the reposition, ...): this move's rest and the moves of the
+        same phase after it (mm). While stopping, only the way to rest."""
+        here = self.distance_to_go_mm
+        if self._state is not ExecutorState.RUNNING and self._state is not ExecutorState.WAITING:
+            return here
+        phase = self._chunk.chunk.phase
+        later = 0.0
+        for planned in self._plan.chunks[self._index + 1 : self._count]:
+            if planned.chunk.phase is not phase:
+                break
+            if planned.chunk.s_dof is not None:
+                later += planned.chunk.s_dof.end - planned.chunk.s_dof.start
+        return here + later
+
+    @property
+    def path_velocity_mm_s(self) -> float:
+        """The X-Y speed along the path of the last setpoint (mm/s)."""
+        return math.hypot(self._last.vx, self._last.vy)
+
     # -- commands --------------------------------------------------------------------------
     def set_override(self, percent: float) -> None:
         """Feed override, 0 .. 120 %. Takes effect at once, without a jump in velocity."""

@@ -14,6 +14,7 @@ from app.config import AxisConfig
 from app.machine.axes import AxisGroup
 from app.machine.executor import PathExecutor
 from app.machine.refusals import Reason, Refusal, refusal
+from app.machine.snapshot import HomingView
 from app.machine.supervision import fault_code_text
 
 HOMING_ORDER: tuple[str, ...] = ("Z", "Y", "X")
@@ -54,6 +55,16 @@ class HomingSequence:
     @property
     def current_axis(self) -> str:
         return self.axes_to_home[self._index] if self._index < len(self.axes_to_home) else ""
+
+    def view(self, now_s: float) -> HomingView:
+        """This run as the snapshot carries it."""
+        return HomingView(
+            tuple(self.axes_to_home),
+            tuple(self.axes_to_home[: self._index]),
+            self.current_axis,
+            self.clearance is not None,
+            now_s - self.started_s,
+        )
 
     def _next_phase(self, phase: str, now_s: float) -> None:
         self._phase = phase

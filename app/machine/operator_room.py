@@ -16,6 +16,7 @@ from app.config import MachineConfig
 from app.drivers.contracts import MachineBackend, PendantDevice, WidthGauge
 from app.machine.cycle import PlanSubmitter
 from app.machine.manual_room import ManualRoom
+from app.machine.planner.limits import MAX_OVERRIDE_PCT
 from app.machine.preview import PlanPublisher
 from app.machine.process_params import jog_speeds, stave_limits
 from app.machine.refusals import Reason, refusal
@@ -84,7 +85,7 @@ class OperatorRoom(ManualRoom):
         self._publish_recipe_preview()
 
     def _set_feed_override(self, percent: float) -> None:
-        if not 0.0 <= percent <= 120.0:
+        if not 0.0 <= percent <= MAX_OVERRIDE_PCT:
             self._refuse(refusal(Reason.FEED_OVERRIDE_RANGE, percent))
             return
         self.feed_override_pct = percent

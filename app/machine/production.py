@@ -35,7 +35,8 @@ class Production:
         self.shift_start = wall_clock()
         self.pieces_shift, self.pieces_total = store.piece_counts(self.shift_start)
         self.last_width_mm: float | None = None
-        self.last_cycle_time_s: float | None = None
+        self.last_cycle_time_s: float | None = None  # from Start, the wait for the board in
+        self.last_wait_s: float | None = None  # of that, the wait for the board
         self.last_step_times_s: dict[str, float] = {}
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         self._shift_params: dict[str, float] | None = None  # None: counting since power-up
@@ -79,6 +80,7 @@ class Production:
         self.pieces_total += 1
         self.last_width_mm = cycle.outcome.width_mm
         self.last_cycle_time_s = cycle_time_s
+        self.last_wait_s = cycle.waited_s(now_s)
         self.last_step_times_s = cycle.step_times_s()
 
     def aborted(self, cycle: AutomaticCycle, now_s: float, alarm: str | None) -> None:

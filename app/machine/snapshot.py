@@ -71,13 +71,36 @@ class AlarmView:
 @dataclass(frozen=True)
 class CycleView:
     step: CycleStep | None
-    elapsed_s: float
+    elapsed_s: float  # since Start
     remaining_s: float
-    width_mm: float | None
+    width_mm: float | None  # the board's, as soon as the gauge has measured it
     d_mm: float | None
     r_mm: float | None
     tilt_deg: float | None
     finished_board_on_table: bool = False  # waiting for a board while the last one lies there
+    waited_s: float = 0.0  # of elapsed_s, the wait for the board (so far, while waiting)
+    working_s: float = 0.0  # of elapsed_s, the time since the board was there
+    # 0 .. 1 along the planned path; None while the step has no known length (a wait for a
+    # board, a sensor, the gauge or the spindle) or while stopping: no progress bar then.
+    progress: float | None = None
+    # While the axes follow the path: the X-Y path left in this move and in this phase (a
+    # side's cut with all its passes), and the speed along the path; None otherwise.
+    move_to_go_mm: float | None = None
+    phase_to_go_mm: float | None = None
+    path_velocity_mm_s: float | None = None
+
+
+@dataclass(frozen=True)
+class HomingView:
+    """Where a homing run is, for the screens: the axes it homes in their order, those done,
+    the one homing now ("" once done), whether it first moves clear of a board, and how long
+    it has run (machine seconds)."""
+
+    axes: tuple[str, ...]
+    done: tuple[str, ...]
+    current: str
+    clearing: bool
+    elapsed_s: float
 
 
 @dataclass(frozen=True)
@@ -140,7 +163,7 @@ class MachineSnapshot:
     pieces_shift: int
     pieces_total: int
     last_width_mm: float | None
-    last_cycle_time_s: float | None
+    last_cycle_time_s: float | None  # from Start to the clamps open, the wait included
     cycle: CycleView
     feed_override_pct: float
     plan_id: int  # 0: no plan
@@ -155,12 +178,22 @@ class MachineSnapshot:
     # Where the last finished cycle's seconds went: (timed step name, seconds), in order.
     last_step_times_s: tuple[tuple[str, float], ...] = ()
     message_serial: int = 0  # counts every message given, so a repeated one is seen as new
+    last_wait_s: float | None = None  # of last_cycle_time_s, the wait for the board
+    homing: HomingView | None = None  # a homing run, in automatic or manual mode
 
     def axis(self, name: str) -> AxisView:
         for axis in self.axes:
             if axis.name == name:
                 return axis
         raise KeyError(name)
+
+    @property
+    def last_work_time_s(self) -> float | None:
+        """The last cycle's time without its wait for the board (from the board's arrival to
+        the clamps open)."""
+        if self.last_cycle_time_s is None:
+            return None
+        return max(self.last_cycle_time_s - (self.last_wait_s or 0.0), 0.0)
 
     @property
     def all_homed(self) -> bool:

@@ -62,6 +62,9 @@ class MachineController(Protocol):
     def last_cycle_time_s(self) -> float | None: ...
 
     @property
+    def last_wait_s(self) -> float | None: ...
+
+    @property
     def last_step_times_s(self) -> dict[str, float]: ...
 
     @property
@@ -104,6 +107,7 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
     )
     cycle = c.cycle
     planned = cycle.planned if cycle is not None else None
+    following = cycle.following_executor if cycle is not None else None
     cycle_view = CycleView(
         step=cycle.step if cycle is not None else None,
         elapsed_s=c.now_s - cycle.started_s if cycle is not None else 0.0,
@@ -116,6 +120,12 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         and cycle.step is CycleStep.WAIT_FOR_PART
         and cycle.board_already_cut
         and c.inputs.part_present,
+        waited_s=cycle.waited_s(c.now_s) if cycle is not None else 0.0,
+        working_s=cycle.working_s(c.now_s) if cycle is not None else 0.0,
+        progress=cycle.path_progress() if cycle is not None else None,
+        move_to_go_mm=following.distance_to_go_mm if following is not None else None,
+        phase_to_go_mm=following.phase_distance_to_go_mm if following is not None else None,
+        path_velocity_mm_s=following.path_velocity_mm_s if following is not None else None,
     )
     recipe = c.recipe
     return MachineSnapshot(
@@ -150,4 +160,6 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         if c.barrel is None
         else barrel_view(c.barrel, planned.barrel_stave if planned else None, c.board_choice),
         last_step_times_s=tuple(c.last_step_times_s.items()),
+        last_wait_s=c.last_wait_s,
+        homing=c.homing.view(c.now_s) if c.homing is not None else None,
     )

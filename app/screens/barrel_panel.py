@@ -27,7 +27,7 @@ from app.screens.formatting import format_number
 from app.screens.widgets.barrel_drawing import BarrelDrawing
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
-from app.screens.widgets.readouts import set_text, styled_label
+from app.screens.widgets.readouts import ElidedLinesLabel, set_text, styled_label
 
 
 class BarrelPanel(QFrame):
@@ -37,13 +37,15 @@ class BarrelPanel(QFrame):
         self.context = context
         self.view: BarrelView | None = None
         self.drawing = BarrelDrawing()
-        self.staves_label = styled_label("", "value", "barrelStaves")
+        self.staves_label = styled_label("", "figure", "barrelStaves")
         self.gap_label = styled_label("", "caption", "barrelGap")
         self.left_label = styled_label("", "caption", "barrelLeft")
-        self.question_label = styled_label("", "message", "closingQuestion")
-        self.question_label.setWordWrap(True)
-        self.close_now_button = touch_button("closeNowButton")
-        self.one_more_button = touch_button("oneMoreButton")
+        # Two lines kept, wrapped to the column's width and never widening it.
+        self.question_label = ElidedLinesLabel("message", "closingQuestion", lines=2)
+        self.question_label.never_widen()
+        # Narrow padding: the two answers share the panel's width (half the main screen's).
+        self.close_now_button = touch_button("closeNowButton", "step")
+        self.one_more_button = touch_button("oneMoreButton", "step")
         for button, choice in (
             (self.close_now_button, BoardChoice.CLOSE_NOW),
             (self.one_more_button, BoardChoice.CUT_ORDINARY),
@@ -55,8 +57,6 @@ class BarrelPanel(QFrame):
         self.card_button = touch_button("barrelCardButton")
         self.card_button.clicked.connect(self.export_card)
 
-        for label in (self.gap_label, self.left_label):
-            label.setWordWrap(True)
         column = QVBoxLayout()  # beside the drawing: the drawing keeps the panel's height
         column.setSpacing(4)
         column.addWidget(self.staves_label)
@@ -88,7 +88,7 @@ class BarrelPanel(QFrame):
         self.show_barrel(None, None)
 
     def retranslate(self) -> None:
-        self.close_now_button.setText(self.tr("Closing stave now"))
+        self.close_now_button.setText(self.tr("Closing stave"))
         self.one_more_button.setText(self.tr("One more stave"))
         self.card_button.setText(self.tr("Cooper's card"))
         self._texts()
@@ -105,15 +105,23 @@ class BarrelPanel(QFrame):
             (self.close_now_button, BoardChoice.CLOSE_NOW),
             (self.one_more_button, BoardChoice.CUT_ORDINARY),
         ):
-            button.setVisible(asking)
             button.setEnabled(not choose_reason)
             button.setChecked(view is not None and view.choice is choice)
-        self.question_label.setVisible(asking)
-        self.gap_label.setVisible(view is not None and not asking)
-        self.left_label.setVisible(view is not None and not asking)
-        self.drawing.setVisible(view is not None)
-        self.start_button.setVisible(not asking)
-        self.card_button.setVisible(view is not None and not asking)
+        shown = {
+            self.close_now_button: asking,
+            self.one_more_button: asking,
+            self.question_label: asking,
+            self.gap_label: view is not None and not asking,
+            self.left_label: view is not None and not asking,
+            self.drawing: view is not None,
+            self.start_button: not asking,
+            self.card_button: view is not None and not asking,
+        }
+        # What goes away first, then what comes: never both at once, not even for one
+        # layout pass (the panel would grow the main screen past the panel's height).
+        for widget, visible in sorted(shown.items(), key=lambda item: item[1]):
+            if widget.isVisibleTo(self) != visible:
+                widget.setVisible(visible)
         self._texts()
 
     def _texts(self) -> None:
@@ -140,20 +148,18 @@ class BarrelPanel(QFrame):
             gap = f"{format_number(view.gap_mm, 1)} mm"
             set_text(
                 self.gap_label,
-                self.tr("Left: %1 of the perimeter (gap %2)")
-                .replace("%1", left_mm)
-                .replace("%2", gap),
+                self.tr("Left %1 · gap %2").replace("%1", left_mm).replace("%2", gap),
             )
             left = "—" if view.staves_left is None else str(view.staves_left)
             set_text(
                 self.left_label,
-                self.tr("About %1 more staves at the mean width").replace("%1", left),
+                self.tr("About %1 more staves").replace("%1", left),
             )
         if view.closing_width_mm is not None:
             width = f"{format_number(view.closing_width_mm, 1)} mm"
             set_text(
                 self.question_label,
-                self.tr("One stave of %1 closes the barrel. The next board:").replace("%1", width),
+                self.tr("A stave of %1 closes it. Next board:").replace("%1", width),
             )
 
     def export_card(self, directory: Path | None = None) -> None:

@@ -1,8 +1,14 @@
 """Main screen (automatic mode, the default after power-on; docs/MACHINE.md section 5).
 
 Recipe selection (previous/next with its number, or a list), big Start and Stop, Home and
-Reset, the axes in big digits (unhomed positions look different), piece counters, the last
-width and cycle time, elapsed and remaining time of the running cycle, and the live plan view.
+Reset, the axes in big digits (unhomed positions look different), the I/O strip, piece
+counters, the board's width once measured, the last cycle's time with its wait for the board
+apart, the cycle panel (step; cycle time, wait, remaining; distance to go and path speed, or
+during homing the axes done and to come; progress only along the plan; the feed override
+while a cycle runs), the live plan view, the barrel panel, the last cycle's step times.
+
+Everything shown comes computed from the snapshot: the screen formats figures and never
+derives motion from them (distance, speed, progress are the machine's).
 
 Why Start and Stop are enabled from ``snapshot.allowed``: the machine decides what is allowed
 (one rule for the buttons and the machine); a disabled Start says why in words below it, so
@@ -19,6 +25,7 @@ from PySide6.QtWidgets import (
     QProgressBar,
     QPushButton,
     QSizePolicy,
+    QStackedWidget,
     QVBoxLayout,
     QWidget,
 )
@@ -31,10 +38,11 @@ from app.machine.commands import (
     Reset,
     Resume,
     SelectRecipe,
+    SetFeedOverride,
     Start,
     Stop,
 )
-from app.machine.snapshot import MachineSnapshot
+from app.machine.snapshot import HomingView, MachineSnapshot
 from app.machine.states import MachineState
 from app.screens.barrel_panel import BarrelPanel
 from app.screens.base import Screen, ScreenContext, refusal
@@ -42,6 +50,7 @@ from app.screens.formatting import format_duration, format_optional
 from app.screens.texts import step_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
+from app.screens.widgets.feed_override import FeedOverride
 from app.screens.widgets.io_strip import LAMP_PX as IO_LAMP_PX
 from app.screens.widgets.io_strip import IoStrip
 from app.screens.widgets.plan_view import PlanView
@@ -55,6 +64,7 @@ from app.screens.widgets.readouts import (
 from app.screens.widgets.step_times_bar import StepTimesBar
 
 LEFT_WIDTH_PX = 268
+FIGURE_SAMPLE = "8888 mm/s"  # the widest figure of the cycle panel
 
 
 class MainScreen(Screen):
@@ -125,8 +135,18 @@ class MainScreen(Screen):
         left.addWidget(self.start_button)
         left.addWidget(self.stop_button)
         left.addLayout(row)
-        left.addWidget(self.hint_label)
-        left.addStretch(1)
+        # One place under the buttons: why Start is refused while idle, or, on the simulated
+        # machine while a cycle runs (no hint then), the operator's hands putting a board in.
+        self.hint_stack = QStackedWidget()
+        self.hint_label.setAlignment(Qt.AlignmentFlag.AlignTop | Qt.AlignmentFlag.AlignLeft)
+        self.hint_stack.addWidget(self.hint_label)
+        load_page = QWidget()
+        load_layout = QVBoxLayout(load_page)
+        load_layout.setContentsMargins(0, 0, 0, 0)
+        load_layout.addWidget(self.load_button)
+        load_layout.addStretch(1)
+        self.hint_stack.addWidget(load_page)
+        left.addWidget(self.hint_stack, 1)
         left_widget = QWidget()
         left_widget.setLayout(left)
         left_widget.setFixedWidth(LEFT_WIDTH_PX)
@@ -145,62 +165,107 @@ class MainScreen(Screen):
         self.total_tile = ValueTile(name="piecesTotal", role="bigvalue")
         self.width_tile = ValueTile(name="lastWidth")
         self.cycle_time_tile = ValueTile(name="lastCycleTime")
+        # The last cycle's wait for its board, beside its time (not in it).
+        self.last_wait_label = styled_label("", "caption", "lastWait")
+        self.cycle_time_tile.add_note(self.last_wait_label)
         self.reset_shift_button = touch_button("resetShiftButton")
         self.reset_shift_button.clicked.connect(self.confirm_reset_shift)
-        counters = QGridLayout()
+        counters = QHBoxLayout()
         counters.setSpacing(8)
-        counters.addWidget(self.shift_tile, 0, 0)
-        counters.addWidget(self.total_tile, 0, 1)
-        counters.addWidget(self.width_tile, 0, 2)
-        counters.addWidget(self.cycle_time_tile, 0, 3)
-        counters.addWidget(self.reset_shift_button, 0, 4)
+        for tile in (self.shift_tile, self.total_tile, self.width_tile):
+            counters.addWidget(tile, 2)
+        counters.addWidget(self.cycle_time_tile, 3)
+        counters.addWidget(self.reset_shift_button, 2)
 
+        # The cycle (or the homing) now: its step, its times, the path left and the speed,
+        # progress where the step has a known length, and the feed override.
         cycle_panel = QFrame()
         cycle_panel.setObjectName("panel")
-        self.step_label = styled_label("", "value", "cycleStep")
+        self.step_label = ElidedLinesLabel("value", "cycleStep", lines=1)
+        self.step_label.never_widen()
+        figures = QGridLayout()
+        figures.setHorizontalSpacing(8)
+        figures.setVerticalSpacing(0)
+        # Three figures in two rows: the cycle's times, then the path (or, homing, the axes).
         self.elapsed_caption = styled_label("", "caption")
-        self.elapsed_label = styled_label("—", "value", "elapsed")
+        self.elapsed_label = styled_label("—", "figure", "elapsed")
+        self.waited_caption = styled_label("", "caption")
+        self.waited_label = styled_label("—", "figure", "waited")
         self.remaining_caption = styled_label("", "caption")
-        self.remaining_label = styled_label("—", "value", "remaining")
+        self.remaining_label = styled_label("—", "figure", "remaining")
+        self.move_caption = styled_label("", "caption")
+        self.move_label = styled_label("—", "figure", "moveToGo")
+        self.phase_caption = styled_label("", "caption")
+        self.phase_label = styled_label("—", "figure", "phaseToGo")
+        self.speed_caption = styled_label("", "caption")
+        self.speed_label = styled_label("—", "figure", "pathSpeed")
+        pairs = (
+            (self.elapsed_caption, self.elapsed_label),
+            (self.waited_caption, self.waited_label),
+            (self.remaining_caption, self.remaining_label),
+            (self.move_caption, self.move_label),
+            (self.phase_caption, self.phase_label),
+            (self.speed_caption, self.speed_label),
+        )
+        for index, (caption, value) in enumerate(pairs):
+            line, column = divmod(index, 3)
+            figures.addWidget(caption, 2 * line, column)
+            figures.addWidget(value, 2 * line + 1, column)
+        for column in range(3):
+            figures.setColumnStretch(column, 1)
+        self._figure_values = tuple(value for _caption, value in pairs)
+        self._fit_figures()
         self.progress = QProgressBar()
         self.progress.setObjectName("cycleProgress")
         self.progress.setRange(0, 1000)
         self.progress.setTextVisible(False)
-        cycle_layout = QGridLayout(cycle_panel)
+        self._keep_place(self.progress)
+        self.feed_override = FeedOverride()
+        self.feed_override.requested.connect(
+            lambda percent: self.context.send(SetFeedOverride(percent))
+        )
+        self._keep_place(self.feed_override)
+        cycle_layout = QVBoxLayout(cycle_panel)
         cycle_layout.setContentsMargins(10, 4, 10, 6)
-        cycle_layout.setVerticalSpacing(2)
-        cycle_layout.addWidget(self.step_label, 0, 0, 2, 1)
-        cycle_layout.addWidget(self.elapsed_caption, 0, 1)
-        cycle_layout.addWidget(self.elapsed_label, 1, 1)
-        cycle_layout.addWidget(self.remaining_caption, 0, 2)
-        cycle_layout.addWidget(self.remaining_label, 1, 2)
-        cycle_layout.addWidget(self.load_button, 0, 3, 2, 1)
-        cycle_layout.addWidget(self.progress, 2, 0, 1, 4)
+        cycle_layout.setSpacing(4)
+        cycle_layout.addWidget(self.step_label)
+        cycle_layout.addLayout(figures)
+        cycle_layout.addWidget(self.progress)
+        cycle_layout.addStretch(1)
+        cycle_layout.addWidget(self.feed_override)
+
         self.step_times_caption = styled_label("", "caption")
         self.step_times_bar = StepTimesBar()
-        cycle_layout.addWidget(self.step_times_caption, 3, 0, 1, 4)
-        cycle_layout.addWidget(self.step_times_bar, 4, 0, 1, 4)
-        cycle_layout.setColumnStretch(0, 1)
+        step_times = QHBoxLayout()
+        step_times.setSpacing(8)
+        step_times.addWidget(self.step_times_caption)
+        step_times.addWidget(self.step_times_bar, 1)
 
         self.io_strip = IoStrip()
         self.io_strip.button.clicked.connect(lambda: self.context.navigate("io"))
 
         self.plan_view = PlanView()
         self.plan_view.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
-        self.plan_view.setMinimumHeight(150)
+        self.plan_view.setMinimumHeight(100)  # the stave is long and flat: 100 px show it
 
         right = QVBoxLayout()
         right.setSpacing(8)
         right.addLayout(axes)
         right.addWidget(self.io_strip)
         right.addLayout(counters)
-        right.addWidget(cycle_panel)
         self.barrel_panel = BarrelPanel(context)
-        views = QHBoxLayout()
+        views = QVBoxLayout()  # the plan over the barrel being raised
         views.setSpacing(8)
         views.addWidget(self.plan_view, 1)
-        views.addWidget(self.barrel_panel, 1)
-        right.addLayout(views, 1)
+        views.addWidget(self.barrel_panel, 1)  # on a larger panel the drawing grows too
+        middle = QHBoxLayout()
+        middle.setSpacing(8)
+        # The cycle panel at about its own width; the plan and the barrel (whose closing
+        # question's two answers are the widest row) take the rest.
+        middle.addWidget(cycle_panel, 4)
+        middle.addLayout(views, 5)
+        right.addLayout(middle, 1)
+        right.addLayout(step_times)
 
         layout = QHBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
@@ -223,6 +288,20 @@ class MainScreen(Screen):
         else:
             set_text(self.load_button, self.tr("Put a board in\n(simulation)"))
 
+    def _fit_figures(self) -> None:
+        """Each figure as wide as its widest value ("8888 mm/s"), whatever it shows now: the
+        figures change ten times a second, and the panel must not change width with them."""
+        for label in self._figure_values:
+            label.ensurePolished()
+            label.setMinimumWidth(label.fontMetrics().horizontalAdvance(FIGURE_SAMPLE) + 2)
+
+    @staticmethod
+    def _keep_place(widget: QWidget) -> None:
+        """Hidden, ``widget`` keeps its place: nothing around it moves when it shows."""
+        policy = widget.sizePolicy()
+        policy.setRetainSizeWhenHidden(True)
+        widget.setSizePolicy(policy)
+
     def retranslate(self) -> None:
         self.recipe_caption.setText(self.tr("Recipe"))
         self.list_button.setToolTip(self.tr("Choose recipe…"))
@@ -238,8 +317,11 @@ class MainScreen(Screen):
         self.total_tile.set_caption(self.tr("Pieces total"))
         self.width_tile.set_caption(self.tr("Last width"))
         self.cycle_time_tile.set_caption(self.tr("Last cycle"))
-        self.elapsed_caption.setText(self.tr("Elapsed"))
+        self._show_width(self.snapshot)
+        self.elapsed_caption.setText(self.tr("Cycle"))
+        self.waited_caption.setText(self.tr("Waited"))
         self.remaining_caption.setText(self.tr("Remaining"))
+        self.feed_override.retranslate()
         self.io_strip.button.setToolTip(self.tr("All inputs and outputs"))
         self.io_strip.retranslate()
         self.step_times_caption.setText(self.tr("Last cycle by step"))
@@ -247,6 +329,8 @@ class MainScreen(Screen):
             readout.set_not_homed_text(self.tr("NOT HOMED"))
         self._show_recipe_number()
         self.barrel_panel.retranslate()
+        if self.snapshot is not None:
+            self._show_cycle(self.snapshot)
 
     # -- recipes -------------------------------------------------------------------------------
 
@@ -365,7 +449,8 @@ class MainScreen(Screen):
             button.setEnabled(not select_reason)
             button.setToolTip(select_reason)
         simulation = "InjectFault" in allowed and not allowed["InjectFault"]
-        self.load_button.setVisible(simulation)
+        hands = simulation and snapshot.state is MachineState.AUTOMATIC
+        self.hint_stack.setCurrentIndex(1 if hands else 0)
         self._set_load_text(snapshot.inputs.part_present)
         self.load_button.setEnabled(
             simulation and snapshot.state is MachineState.AUTOMATIC and not allowed["LoadBoard"]
@@ -381,30 +466,93 @@ class MainScreen(Screen):
 
         self.shift_tile.set_value(str(snapshot.pieces_shift))
         self.total_tile.set_value(str(snapshot.pieces_total))
-        self.width_tile.set_value(format_optional(snapshot.last_width_mm, 1, "mm"))
-        self.cycle_time_tile.set_value(
-            format_duration(snapshot.last_cycle_time_s) if snapshot.last_cycle_time_s else "—"
-        )
-
+        self._show_width(snapshot)
+        self.cycle_time_tile.set_value(format_duration(snapshot.last_work_time_s))
+        wait = format_duration(snapshot.last_wait_s)
+        shown = wait not in ("—", format_duration(0.0))  # no note for no wait
+        set_text(self.last_wait_label, self.tr("+%1 waiting").replace("%1", wait) if shown else "")
         self.step_times_bar.set_step_times(snapshot.last_step_times_s)
-        cycle = snapshot.cycle
-        if cycle.finished_board_on_table:
-            set_text(self.step_label, self.tr("Take the finished board off"))
-        elif cycle.step is not None:
-            set_text(self.step_label, step_text(cycle.step))
-            set_text(self.elapsed_label, format_duration(cycle.elapsed_s))
-            set_text(self.remaining_label, format_duration(cycle.remaining_s))
-            total = cycle.elapsed_s + cycle.remaining_s
-            self.progress.setValue(round(1000 * cycle.elapsed_s / total) if total > 0 else 0)
-        else:
-            set_text(self.step_label, self.tr("No cycle running"))
-            set_text(self.elapsed_label, "—")
-            set_text(self.remaining_label, "—")
-            self.progress.setValue(0)
+        self._show_cycle(snapshot)
 
         self.io_strip.show_inputs(snapshot.inputs, force)
         self._update_plan(snapshot)
         self._update_barrel(snapshot)
+
+    def _show_width(self, snapshot: MachineSnapshot | None) -> None:
+        """The board being cut as soon as the gauge has measured it; else the last one's."""
+        measured = snapshot.cycle.width_mm if snapshot is not None else None
+        if measured is not None:
+            self.width_tile.set_caption(self.tr("Board width"))
+            self.width_tile.set_value(format_optional(measured, 1, "mm"))
+            return
+        self.width_tile.set_caption(self.tr("Last width"))
+        last = snapshot.last_width_mm if snapshot is not None else None
+        self.width_tile.set_value(format_optional(last, 1, "mm"))
+
+    def _show_cycle(self, snapshot: MachineSnapshot) -> None:
+        """The cycle panel: the step, its figures, the progress where the step has a known
+        length (never for a wait or a stop), and the feed override while a cycle runs."""
+        cycle = snapshot.cycle
+        homing = snapshot.homing if cycle.step is None else None
+        self.feed_override.setVisible(
+            snapshot.state in (MachineState.AUTOMATIC, MachineState.STOPPING)
+        )
+        self.feed_override.show_percent(snapshot.feed_override_pct)
+        if cycle.finished_board_on_table:
+            set_text(self.step_label, self.tr("Take the finished board off"))
+        elif cycle.step is not None:
+            set_text(self.step_label, step_text(cycle.step))
+        elif homing is not None:
+            set_text(self.step_label, self._homing_text(homing))
+        else:
+            set_text(self.step_label, self.tr("No cycle running"))
+        running = cycle.step is not None
+        set_text(self.elapsed_label, format_duration(cycle.working_s) if running else "—")
+        set_text(self.waited_label, format_duration(cycle.waited_s) if running else "—")
+        # Remaining: known once the path is planned (to rest while stopping), not before.
+        known = running and (cycle.progress is not None or cycle.remaining_s > 0.0)
+        set_text(self.remaining_label, format_duration(cycle.remaining_s) if known else "—")
+        if homing is not None:
+            self._show_homing_axes(homing)
+        else:
+            self.move_caption.setText(self.tr("Move to go"))
+            self.phase_caption.setText(self.tr("Step to go"))
+            self.speed_caption.setText(self.tr("Path speed"))
+            set_text(self.move_label, format_optional(cycle.move_to_go_mm, 0, "mm"))
+            set_text(self.phase_label, format_optional(cycle.phase_to_go_mm, 0, "mm"))
+            set_text(self.speed_label, format_optional(cycle.path_velocity_mm_s, 0, "mm/s"))
+        self.progress.setVisible(cycle.progress is not None)
+        if cycle.progress is not None:
+            self.progress.setValue(round(1000 * cycle.progress))
+
+    def _homing_text(self, homing: HomingView) -> str:
+        if homing.clearing:
+            return self.tr("Moving clear of the board")
+        if homing.current:
+            return self.tr("Homing axis %1").replace("%1", homing.current)
+        return self.tr("Homing done")
+
+    def _show_homing_axes(self, homing: HomingView) -> None:
+        """The second row of figures names the axes homing in their order: done, homing
+        now, or still to come."""
+        slots = (
+            (self.move_caption, self.move_label),
+            (self.phase_caption, self.phase_label),
+            (self.speed_caption, self.speed_label),
+        )
+        for index, (caption, value) in enumerate(slots):
+            if index >= len(homing.axes):
+                caption.setText("")
+                set_text(value, "")
+                continue
+            axis = homing.axes[index]
+            caption.setText(self.tr("Axis %1").replace("%1", axis))
+            if axis in homing.done:
+                set_text(value, self.tr("homed ✓"))
+            elif axis == homing.current and not homing.clearing:
+                set_text(value, self.tr("homing…"))
+            else:
+                set_text(value, self.tr("waiting"))
 
     def _update_barrel(self, snapshot: MachineSnapshot) -> None:
         """The barrel panel, while the selected recipe makes barrels or one is raised."""
@@ -418,6 +566,7 @@ class MainScreen(Screen):
         self.plan_view.set_scale(scale)
         self.io_strip.set_lamp_diameter(round(IO_LAMP_PX * scale))
         self.step_times_bar.set_scale(scale)
+        self._fit_figures()
 
     def _enable(self, button: QPushButton, command: str) -> None:
         reason = refusal(self.snapshot, command)

@@ -967,8 +967,8 @@
     <name>BarrelPanel</name>
     <message>
         <location filename="../../app/screens/barrel_panel.py" line="+91" />
-        <source>Closing stave now</source>
-        <translation>Closing stave now</translation>
+        <source>Closing stave</source>
+        <translation>Closing stave</translation>
     </message>
     <message>
         <location line="+1" />
@@ -977,12 +977,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+73" />
+        <location line="+79" />
         <source>Cooper's card</source>
         <translation>Cooper's card</translation>
     </message>
     <message>
-        <location line="-44" />
+        <location line="-42" />
         <source>No barrel is being raised</source>
         <translation>No barrel is being raised</translation>
     </message>
@@ -1023,18 +1023,18 @@
     </message>
     <message>
         <location line="+6" />
-        <source>Left: %1 of the perimeter (gap %2)</source>
-        <translation>Left: %1 of the perimeter (gap %2)</translation>
+        <source>Left %1 · gap %2</source>
+        <translation>Left %1 · gap %2</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>About %1 more staves at the mean width</source>
-        <translation>About %1 more staves at the mean width</translation>
+        <location line="+5" />
+        <source>About %1 more staves</source>
+        <translation>About %1 more staves</translation>
     </message>
     <message>
         <location line="+6" />
-        <source>One stave of %1 closes the barrel. The next board:</source>
-        <translation>One stave of %1 closes the barrel. The next board:</translation>
+        <source>A stave of %1 closes it. Next board:</source>
+        <translation>A stave of %1 closes it. Next board:</translation>
     </message>
     <message>
         <location line="+23" />
@@ -1061,6 +1061,29 @@
         <location line="-65" />
         <source>Cancel</source>
         <translation>Cancel</translation>
+    </message>
+</context>
+<context>
+    <name>FeedOverride</name>
+    <message>
+        <location filename="../../app/screens/widgets/feed_override.py" line="+71" />
+        <source>Feed override</source>
+        <translation>Feed override</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Slower by 10 %</source>
+        <translation>Slower by 10 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Faster by 10 %</source>
+        <translation>Faster by 10 %</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The recipe's feed</source>
+        <translation>The recipe's feed</translation>
     </message>
 </context>
 <context>
@@ -2038,12 +2061,12 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+216" />
+        <location filename="../../app/screens/main_screen.py" line="+281" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+25" />
         <source>Recipe</source>
         <translation>Recipe</translation>
     </message>
@@ -2083,7 +2106,7 @@
         <translation>Reset</translation>
     </message>
     <message>
-        <location line="-10" />
+        <location line="-24" />
         <source>Put a board in
 (simulation)</source>
         <translation>Put a board in
@@ -2097,7 +2120,7 @@
 (simulation)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+28" />
         <source>New
 shift</source>
         <translation>New
@@ -2115,18 +2138,24 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
+        <location line="+170" />
         <source>Last width</source>
         <translation>Last width</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-169" />
         <source>Last cycle</source>
         <translation>Last cycle</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Cycle</source>
+        <translation>Cycle</translation>
+    </message>
+    <message>
         <location line="+1" />
-        <source>Elapsed</source>
-        <translation>Elapsed</translation>
+        <source>Waited</source>
+        <translation>Waited</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2134,7 +2163,7 @@ shift</translation>
         <translation>Remaining</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>All inputs and outputs</source>
         <translation>All inputs and outputs</translation>
     </message>
@@ -2149,7 +2178,7 @@ shift</translation>
         <translation>NOT HOMED</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+27" />
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>There are no recipes yet: create one on Recipes.</translation>
     </message>
@@ -2199,14 +2228,74 @@ shift</translation>
         <translation>No. %1</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+55" />
+        <source>+%1 waiting</source>
+        <translation>+%1 waiting</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Board width</source>
+        <translation>Board width</translation>
+    </message>
+    <message>
+        <location line="+17" />
         <source>Take the finished board off</source>
         <translation>Take the finished board off</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+6" />
         <source>No cycle running</source>
         <translation>No cycle running</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Move to go</source>
+        <translation>Move to go</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Step to go</source>
+        <translation>Step to go</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Path speed</source>
+        <translation>Path speed</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Moving clear of the board</source>
+        <translation>Moving clear of the board</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Homing axis %1</source>
+        <translation>Homing axis %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Homing done</source>
+        <translation>Homing done</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Axis %1</source>
+        <translation>Axis %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>homed ✓</source>
+        <translation>homed ✓</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>homing…</source>
+        <translation>homing…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>waiting</source>
+        <translation>waiting</translation>
     </message>
 </context>
 <context>
@@ -2947,7 +3036,7 @@ shift</translation>
         <translation>Nothing produced in this range.</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+42" />
         <source>Not read: %1</source>
         <translation>Not read: %1</translation>
     </message>

@@ -967,7 +967,7 @@
     <name>BarrelPanel</name>
     <message>
         <location filename="../../app/screens/barrel_panel.py" line="+91"/>
-        <source>Closing stave now</source>
+        <source>Closing stave</source>
         <translation>Zapri sod zdaj</translation>
     </message>
     <message>
@@ -977,12 +977,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+73"/>
+        <location line="+79"/>
         <source>Cooper&apos;s card</source>
-        <translation>Sodarjeva kartica</translation>
+        <translation>Kartica soda</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-42"/>
         <source>No barrel is being raised</source>
         <translation>Noben sod ni v delu</translation>
     </message>
@@ -1023,18 +1023,18 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>Left: %1 of the perimeter (gap %2)</source>
-        <translation>Ostane: %1 oboda (reža %2)</translation>
+        <source>Left %1 · gap %2</source>
+        <translation>Ostane %1 · reža %2</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>About %1 more staves at the mean width</source>
-        <translation>Še približno %1 dog povprečne širine</translation>
+        <location line="+5"/>
+        <source>About %1 more staves</source>
+        <translation>Še približno %1 dog</translation>
     </message>
     <message>
         <location line="+6"/>
-        <source>One stave of %1 closes the barrel. The next board:</source>
-        <translation>Doga širine %1 zapre sod. Naslednja deska:</translation>
+        <source>A stave of %1 closes it. Next board:</source>
+        <translation>Doga širine %1 ga zapre. Naslednja deska:</translation>
     </message>
     <message>
         <location line="+23"/>
@@ -1061,6 +1061,29 @@
         <location line="-65"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
+    </message>
+</context>
+<context>
+    <name>FeedOverride</name>
+    <message>
+        <location filename="../../app/screens/widgets/feed_override.py" line="+71"/>
+        <source>Feed override</source>
+        <translation>Korekcija podajanja</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slower by 10 %</source>
+        <translation>Počasneje za 10 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Faster by 10 %</source>
+        <translation>Hitreje za 10 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The recipe&apos;s feed</source>
+        <translation>Podajanje iz recepta</translation>
     </message>
 </context>
 <context>
@@ -2038,12 +2061,12 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+216"/>
+        <location filename="../../app/screens/main_screen.py" line="+281"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+25"/>
         <source>Recipe</source>
         <translation>Recept</translation>
     </message>
@@ -2083,7 +2106,7 @@
         <translation>Ponastavi</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-24"/>
         <source>Put a board in
 (simulation)</source>
         <translation>Vstavi desko
@@ -2097,7 +2120,7 @@
 (simulacija)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+28"/>
         <source>New
 shift</source>
         <translation>Nova
@@ -2115,18 +2138,24 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+170"/>
         <source>Last width</source>
         <translation>Zadnja širina</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-169"/>
         <source>Last cycle</source>
         <translation>Zadnji cikel</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>Cycle</source>
+        <translation>Cikel</translation>
+    </message>
+    <message>
         <location line="+1"/>
-        <source>Elapsed</source>
-        <translation>Pretečeno</translation>
+        <source>Waited</source>
+        <translation>Čakanje</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2134,7 +2163,7 @@ izmena</translation>
         <translation>Preostalo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>All inputs and outputs</source>
         <translation>Vsi vhodi in izhodi</translation>
     </message>
@@ -2149,7 +2178,7 @@ izmena</translation>
         <translation>NI REFERENCIRANO</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>There are no recipes yet: create one on Recipes.</source>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
@@ -2199,14 +2228,74 @@ izmena</translation>
         <translation>Št. %1</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+55"/>
+        <source>+%1 waiting</source>
+        <translation>+%1 čakanja</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Board width</source>
+        <translation>Širina deske</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Take the finished board off</source>
         <translation>Odstranite obdelano desko</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>No cycle running</source>
         <translation>Cikel ne teče</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Move to go</source>
+        <translation>Ostanek giba</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step to go</source>
+        <translation>Ostanek koraka</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Path speed</source>
+        <translation>Hitrost</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Moving clear of the board</source>
+        <translation>Umik od deske</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Homing axis %1</source>
+        <translation>Referenciranje osi %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Homing done</source>
+        <translation>Referenciranje končano</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Axis %1</source>
+        <translation>Os %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>homed ✓</source>
+        <translation>referencirana ✓</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>homing…</source>
+        <translation>se referencira…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>waiting</source>
+        <translation>čaka</translation>
     </message>
 </context>
 <context>
@@ -2947,7 +3036,7 @@ izmena</translation>
         <translation>V tem obdobju ni proizvodnje.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Not read: %1</source>
         <translation>Ni prebrano: %1</translation>
     </message>

@@ -4,6 +4,7 @@ at 0 %, abort freezes, and the feedback checks name the axis and the violation."
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -220,3 +221,70 @@ def test_bad_override_is_refused_with_its_value(bad) -> None:
 def test_bad_period_is_refused(bad) -> None:
     with pytest.raises(ValueError, match="period_s"):
         PathExecutor(PLAN, bad)
+
+
+def _trace(executor: PathExecutor, actions: dict[int, object] | None = None) -> list[tuple]:
+    """(phase, x, y, phase to go, move to go, path velocity) before and after every step."""
+    rows = []
+    actions = actions or {}
+    k = 0
+    while True:
+        out = executor.last_output
+        rows.append(
+            (
+                out.phase,
+                out.x,
+                out.y,
+                executor.phase_distance_to_go_mm,
+                executor.distance_to_go_mm,
+                executor.path_velocity_mm_s,
+            )
+        )
+        if executor.done or executor.stopped:
+            return rows
+        k += 1
+        action = actions.get(k)
+        if action is not None:
+            action(executor)  # type: ignore[operator]
+        executor.step()
+
+
+def test_distance_to_go_is_the_path_still_run_in_the_phase() -> None:
+    rows = _trace(PathExecutor(PLAN, PERIOD_S))
+    assert rows[-1][3] == 0.0 and rows[-1][4] == 0.0
+    checked = 0
+    for k in range(0, len(rows) - 1, 25):
+        phase = rows[k][0]
+        travelled = 0.0
+        for a, b in itertools.pairwise(rows[k:]):
+            if b[0] is not phase:
+                break
+            travelled += math.hypot(b[1] - a[1], b[2] - a[2])
+        # The rest of the phase is travelled (chords of a path with radii of metres).
+        assert rows[k][3] == pytest.approx(travelled, abs=0.05), (k, phase)
+        assert rows[k][4] <= rows[k][3] + 1e-9
+        checked += 1
+    assert checked > 100
+
+
+def test_path_velocity_is_the_speed_along_the_path() -> None:
+    rows = _trace(PathExecutor(PLAN, PERIOD_S))
+    for a, b in itertools.pairwise(rows):
+        if a[0] is not b[0]:
+            continue
+        step_mm_s = math.hypot(b[1] - a[1], b[2] - a[2]) / PERIOD_S
+        assert (a[5] + b[5]) / 2 == pytest.approx(step_mm_s, abs=0.5)
+    cutting = max(r[5] for r in rows if r[0] is Phase.CUT_A)
+    assert cutting > 1.0
+
+
+def test_while_stopping_the_distance_to_go_is_the_way_to_rest() -> None:
+    k_stop = int((CUT_A[0] + CUT_A[1]) / 2 / PERIOD_S)
+    rows = _trace(PathExecutor(PLAN, PERIOD_S), {k_stop: PathExecutor.request_stop})
+    at_stop = rows[k_stop]
+    travelled = sum(
+        math.hypot(b[1] - a[1], b[2] - a[2]) for a, b in itertools.pairwise(rows[k_stop:])
+    )
+    assert at_stop[4] == pytest.approx(travelled, abs=0.01)
+    assert at_stop[3] == at_stop[4]
+    assert rows[-1][4] == 0.0 and rows[-1][5] == pytest.approx(0.0, abs=1e-6)

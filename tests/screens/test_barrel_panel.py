@@ -32,9 +32,7 @@ def test_start_a_barrel_and_answer_the_closing_question(qtbot, window, tap) -> N
     panel.show_barrel(view, snapshot)
     assert panel.close_now_button.isVisibleTo(main) and panel.one_more_button.isVisibleTo(main)
     width = f"{view.closing_width_mm:.1f}"
-    assert (
-        panel.question_label.text() == f"One stave of {width} mm closes the barrel. The next board:"
-    )
+    assert panel.question_label.text() == f"A stave of {width} mm closes it. Next board:"
     tap(panel.close_now_button)
     answered = wait_for(qtbot, window, lambda s: s.barrel.choice is BoardChoice.CLOSE_NOW)
     assert answered.barrel.choice is BoardChoice.CLOSE_NOW

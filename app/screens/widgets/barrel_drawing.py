@@ -29,7 +29,7 @@ class BarrelDrawing(QWidget):
         super().__init__(parent)
         self.setObjectName("barrelDrawing")
         self.view: BarrelView | None = None
-        self.setMinimumSize(100, 40)
+        self.setMinimumSize(80, 40)  # on 1024x768 its height, not its width, limits it
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
 
     def set_view(self, view: BarrelView | None) -> None:

@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (
     QFrame,
     QHBoxLayout,
     QLabel,
+    QSizePolicy,
     QVBoxLayout,
     QWidget,
 )
@@ -62,6 +63,14 @@ class FixedLinesLabel(QLabel):
 class ElidedLinesLabel(FixedLinesLabel):
     """A FixedLinesLabel that ends its last line with an ellipsis when the text needs more
     lines (a long recipe name): ``text()`` stays the whole text."""
+
+    def never_widen(self) -> None:
+        """Take the width the layout gives and never ask for more (nor for a height from the
+        width: the height is fixed), so that a long text cannot widen its screen."""
+        policy = self.sizePolicy()
+        policy.setHorizontalPolicy(QSizePolicy.Policy.Ignored)
+        policy.setHeightForWidth(False)
+        self.setSizePolicy(policy)
 
     def paintEvent(self, event: QPaintEvent) -> None:
         text = self.text()
@@ -168,11 +177,19 @@ class ValueTile(QFrame):
         self.setObjectName("panel")
         self.caption_label = styled_label(caption, "caption")
         self.value_label = styled_label("—", role, name)
+        self._value_row = QHBoxLayout()
+        self._value_row.setSpacing(8)
+        self._value_row.addWidget(self.value_label)
+        self._value_row.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(10, 4, 10, 6)
         layout.setSpacing(0)
         layout.addWidget(self.caption_label)
-        layout.addWidget(self.value_label)
+        layout.addLayout(self._value_row)
+
+    def add_note(self, note: QLabel) -> None:
+        """A small text beside the value (what the value leaves out), on its baseline."""
+        self._value_row.insertWidget(1, note, 0, Qt.AlignmentFlag.AlignBottom)
 
     def set_caption(self, caption: str) -> None:
         set_text(self.caption_label, caption)
