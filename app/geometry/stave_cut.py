@@ -136,17 +136,21 @@ def cut_stave(
         raise StaveCutRefused(CutStage.TILT, exc.errors) from exc
     errors: list[FieldError] = []
     length_ratio = stave.length_ratio if stave.profile.uses_length_ratio() else 0.0
-    for tilt_deg in dict.fromkeys((tilts.a_deg, tilts.b_deg)):
+    sides = (("", tilts.a_deg),) if tilts.symmetric else (("A", tilts.a_deg), ("B", tilts.b_deg))
+    for side, tilt_deg in sides:
         errors.extend(
             error
-            for error in validate_stave(
-                stave.length_mm,
-                width_mm,
-                length_ratio,
-                stave.width_ratio,
-                limits,
-                thickness_mm=stave.thickness_mm,
-                tilt_deg=tilt_deg,
+            for error in (
+                side_tilt_error(found, side)
+                for found in validate_stave(
+                    stave.length_mm,
+                    width_mm,
+                    length_ratio,
+                    stave.width_ratio,
+                    limits,
+                    thickness_mm=stave.thickness_mm,
+                    tilt_deg=tilt_deg,
+                )
             )
             if error not in errors
         )
@@ -170,6 +174,20 @@ def cut_stave(
     if travel:
         raise StaveCutRefused(CutStage.TRAVEL, travel, tilts)
     return StaveCut(float(width_mm), tilts, profile, toolpath, float(board_mm))
+
+
+SIDE_TILT_FIELDS = {"A": "tilt_a_deg", "B": "tilt_b_deg"}
+"""The field of each side's bevel when the two sides differ."""
+
+
+def side_tilt_error(error: FieldError, side: str) -> FieldError:
+    """``error`` about the tilt said of one side ("tilt of side B") when the sides differ: a
+    refusal naming only ``tilt_deg`` does not say which of the two bevels is wrong."""
+    if not side or error.field != "tilt_deg":
+        return error
+    words = f"tilt of side {side}"
+    message = error.message.replace("tilt_deg", words, 1)
+    return FieldError(SIDE_TILT_FIELDS[side], error.value, error.allowed, message)
 
 
 def roughing_allowances_mm(depth_mm: float, max_depth_mm: float | None) -> tuple[float, ...]:
