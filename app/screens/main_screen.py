@@ -23,7 +23,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import BarrelType, Recipe
 from app.machine.commands import (
     Abandon,
     Home,
@@ -407,7 +407,7 @@ class MainScreen(Screen):
     def _update_barrel(self, snapshot: MachineSnapshot) -> None:
         """The barrel panel, while the selected recipe makes barrels or one is raised."""
         index = self._current_index()
-        barrels = index is not None and self.recipes[index].tilt_mode is TiltMode.BARREL
+        barrels = index is not None and self.recipes[index].barrel_type is not BarrelType.FIXED_TILT
         self.barrel_panel.setVisible(barrels or snapshot.barrel is not None)
         self.barrel_panel.show_barrel(snapshot.barrel, snapshot)
 

@@ -35,7 +35,7 @@ from PySide6.QtWidgets import (
 from app.data.dxf_profile import DxfProfileError, read_dxf_profile
 from app.data.errors import DataError, FieldValidationError
 from app.data.exchange import export_recipes, import_recipes
-from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, Recipe, TiltMode
+from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, BarrelType, Recipe
 from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
 from app.geometry.errors import FieldError
@@ -95,7 +95,7 @@ FIELDS = (
     "exponent",
     "semi_axis_ratio",
     "drawing",
-    "tilt_mode",
+    "barrel_type",
     "tilt_deg",
     "barrel_diameter_mm",
     "barrel_minor_diameter_mm",
@@ -151,7 +151,7 @@ def new_recipe_template(name: str) -> Recipe:
         thickness_mm=27.0,
         length_ratio=Ratio(1, 4),
         width_ratio=Ratio(3, 4),
-        tilt_mode=TiltMode.FIXED,
+        barrel_type=BarrelType.FIXED_TILT,
         tilt_deg=7.5,
         barrel_diameter_mm=None,
         barrel_perimeter_mm=None,
@@ -240,19 +240,17 @@ class RecipesScreen(Screen):
             for text_label in (label, caption):
                 text_label.setFixedWidth(LABEL_WIDTH_PX)  # the values line up
             row.setColumnStretch(1, 1)
-            if name == "tilt_mode":
-                self.fixed_button = touch_button("tiltFixed", "tab")
-                self.barrel_button = touch_button("tiltBarrel", "tab")
+            if name == "barrel_type":
+                self.type_buttons: dict[BarrelType, QPushButton] = {}
                 group = QButtonGroup(self)
                 mode_row = QHBoxLayout()
-                for button, mode in (
-                    (self.fixed_button, TiltMode.FIXED),
-                    (self.barrel_button, TiltMode.BARREL),
-                ):
+                for kind in BarrelType:
+                    button = touch_button(f"barrelType_{kind.value}", "tab")
                     button.setCheckable(True)
                     group.addButton(button)
-                    button.clicked.connect(lambda _=False, m=mode: self.set_field("tilt_mode", m))
+                    button.clicked.connect(lambda _=False, k=kind: self.set_barrel_type(k))
                     mode_row.addWidget(button)
+                    self.type_buttons[kind] = button
                 row.addLayout(mode_row, 0, 1, 2, 1)
             else:
                 button = touch_button(f"field_{name}", "field")
@@ -370,7 +368,7 @@ class RecipesScreen(Screen):
             "exponent": self.tr("Exponent n"),
             "semi_axis_ratio": self.tr("Semi-axis a : L/2"),
             "drawing": self.tr("Drawing (DXF)"),
-            "tilt_mode": self.tr("Tilt"),
+            "barrel_type": self.tr("Barrel"),
             "tilt_deg": self.tr("Tilt α"),
             "barrel_diameter_mm": self.tr("Barrel diameter"),
             "barrel_minor_diameter_mm": self.tr("Oval: short axis"),
@@ -400,7 +398,7 @@ class RecipesScreen(Screen):
         if name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             text = f"{format_number(low)} … {format_number(high)} {unit}"
-            if name in OPTIONAL_NUMBERS:
+            if name in OPTIONAL_NUMBERS and not self._required(name):
                 text += " " + self.tr("(optional)")
             return text
         if name == "length_ratio":
@@ -411,8 +409,8 @@ class RecipesScreen(Screen):
             return self.tr("1 to %1 characters").replace("%1", str(NAME_MAX_CHARS))
         if name == "note":
             return self.tr("optional")
-        if name == "tilt_mode":
-            return self.tr("fixed, or from the barrel")
+        if name == "barrel_type":
+            return self.tr("a fixed tilt, or computed from a round or oval barrel")
         if name in FAMILY_FIELDS:
             spec = FAMILY_FIELDS[name]
             return f"{format_number(spec.minimum)} … {format_number(spec.maximum)}"
@@ -421,6 +419,21 @@ class RecipesScreen(Screen):
         if name == "drawing":
             return self.tr("one side, head to head; scaled to L and W")
         return ""
+
+    def barrel_type_titles(self) -> dict[BarrelType, str]:
+        return {
+            BarrelType.FIXED_TILT: self.tr("Fixed tilt"),
+            BarrelType.ROUND: self.tr("Round"),
+            BarrelType.OVAL: self.tr("Oval"),
+        }
+
+    def _required(self, name: str) -> bool:
+        """A barrel's belly diameter is needed once the tilt comes from the barrel, its short
+        axis once the barrel is oval (the recipe's validation refuses them missing)."""
+        kind = self.draft.barrel_type if self.draft is not None else BarrelType.FIXED_TILT
+        if name == "barrel_diameter_mm":
+            return kind is not BarrelType.FIXED_TILT
+        return name == "barrel_minor_diameter_mm" and kind is BarrelType.OVAL
 
     def kind_title(self, kind: ProfileKind) -> str:
         titles = {
@@ -443,8 +456,8 @@ class RecipesScreen(Screen):
         self.save_button.setText(self.tr("Save"))
         self.discard_button.setText(self.tr("Discard"))
         self.use_button.setText(self.tr("Use on machine"))
-        self.fixed_button.setText(self.tr("Fixed"))
-        self.barrel_button.setText(self.tr("Barrel"))
+        for kind, text in self.barrel_type_titles().items():
+            self.type_buttons[kind].setText(text)
         self.preview_title.setText(self.tr("Preview"))
         self.width_caption.setText(self.tr("Board width for the preview"))
         self.program_button.setText(self.tr("G-code, DXF…"))
@@ -724,8 +737,8 @@ class RecipesScreen(Screen):
         editing = draft is not None
         for button in self.field_buttons.values():
             button.setEnabled(editing)
-        self.fixed_button.setEnabled(editing)
-        self.barrel_button.setEnabled(editing)
+        for type_button in self.type_buttons.values():
+            type_button.setEnabled(editing)
         if draft is None:
             set_text(self.editor_title, self.tr("No recipe"))
             for button in self.field_buttons.values():
@@ -763,9 +776,10 @@ class RecipesScreen(Screen):
         }
         for name, text in values.items():
             set_text(self.field_buttons[name], text)
-        self.fixed_button.setChecked(draft.tilt_mode is TiltMode.FIXED)
-        self.barrel_button.setChecked(draft.tilt_mode is TiltMode.BARREL)
+        for kind, type_button in self.type_buttons.items():
+            type_button.setChecked(draft.barrel_type is kind)
         self._show_profile_rows(draft.profile.kind)
+        self._show_barrel_rows(draft.barrel_type)
         self.errors = field_errors(draft, self.limits)
         for name in FIELDS:
             problems = self.errors.get(name, [])
@@ -782,6 +796,56 @@ class RecipesScreen(Screen):
                     field_button, "changed", "true" if changed and not problems else "false"
                 )
         self._update_buttons()
+
+    def set_barrel_type(self, kind: BarrelType) -> None:
+        """The touch choice of fixed tilt, round or oval. A short axis belongs only to an oval:
+        leaving oval clears it (saving would refuse it), coming back restores the saved one."""
+        draft = self.draft
+        if draft is None:
+            return
+        changed = replace(draft, barrel_type=kind)
+        if kind is not BarrelType.OVAL:
+            changed = replace(changed, barrel_minor_diameter_mm=None)
+        elif changed.barrel_minor_diameter_mm is None and self.current is not None:
+            changed = replace(
+                changed, barrel_minor_diameter_mm=self.current.barrel_minor_diameter_mm
+            )
+        self.draft = changed
+        self.update_preview()
+        self.show_draft()
+
+    def _show_barrel_rows(self, kind: BarrelType) -> None:
+        """The barrel's rows only for a barrel, the short axis only for an oval; with a barrel
+        the tilt is computed for each board, so its row shows the value and is not a field."""
+        barrel = kind is not BarrelType.FIXED_TILT
+        name = "barrel_minor_diameter_mm"
+        shown = kind is BarrelType.OVAL
+        for widget in self.row_widgets[name]:
+            if widget is self.error_labels[name] and shown:
+                continue
+            widget.setVisible(shown)
+        for row in ("barrel_diameter_mm", name):
+            set_text(self.range_labels[row], self.range_text(row))
+        self.field_buttons["tilt_deg"].setEnabled(not barrel)
+        set_text(self.field_labels["tilt_deg"], self.field_title("tilt_deg"))
+        set_text(self.range_labels["tilt_deg"], self.range_text("tilt_deg"))
+        if barrel:
+            set_text(self.field_buttons["tilt_deg"], self._computed_tilt_text())
+
+    def _computed_tilt_text(self) -> str:
+        """The tilt the barrel gives the preview's board (read-only: the machine computes it
+        for each measured board)."""
+        preview = self.preview
+        if preview is None or preview.tilt_deg is None:
+            return self.tr("computed for each board")
+        text = format_optional(preview.tilt_deg, 2, "°")
+        if preview.tilt_b_deg is not None and preview.tilt_b_deg != preview.tilt_deg:
+            text = f"A {text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
+        return (
+            self.tr("%1 at %2 mm")
+            .replace("%1", text)
+            .replace("%2", format_number(self.preview_width_mm, 1))
+        )
 
     def _show_profile_rows(self, kind: ProfileKind) -> None:
         """Only the rows the kind uses: a family's parameters, a drawing's file, lambda only
@@ -858,6 +922,8 @@ class RecipesScreen(Screen):
             tilt_text = f"A {tilt_text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
         set_text(self.result_labels["tilt"], tilt_text)
         set_text(self.preview_errors, "\n".join(errors))
+        if self.draft.barrel_type is not BarrelType.FIXED_TILT:
+            set_text(self.field_buttons["tilt_deg"], self._computed_tilt_text())
 
     def _width_range(self, recipe: Recipe) -> WidthRange | None:
         """The recipe's range of board widths on this machine (cached: a scan of the

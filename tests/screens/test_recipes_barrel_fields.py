@@ -25,6 +25,16 @@ def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
     barrique = database.get_recipe_by_name("Hogshead 300 l")
     screen.select_recipe(barrique.id)
     assert screen.preview.tilt_deg == screen.preview.tilt_b_deg  # round: one bevel
+    assert find_button(window, "barrelType_round").isChecked()
+    assert not find_button(window, "field_barrel_minor_diameter_mm").isVisible()
+    # The tilt comes from the barrel: shown, not entered; the diameter is not optional.
+    tilt_row = find_button(window, "field_tilt_deg")
+    assert not tilt_row.isEnabled() and tilt_row.text().endswith(" mm")
+    assert screen.range_labels["barrel_diameter_mm"].text().endswith("mm")
+    tap(find_button(window, "barrelType_oval"))
+    assert screen.draft.barrel_type is BarrelType.OVAL
+    assert find_button(window, "field_barrel_minor_diameter_mm").isVisible()
+    assert "oval barrel needs it" in screen.error_labels["barrel_minor_diameter_mm"].text()
     refused = enter(window, tap, "barrel_minor_diameter_mm", "800")  # longer than 760
     assert refused.is_open and "barrel_minor_diameter_mm = 800" in refused.error_label.text()
     tap(find_button(refused, "cancelButton"))
@@ -42,3 +52,14 @@ def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
     tap(find_button(window, "saveRecipe"))
     stored = database.get_recipe(barrique.id)
     assert (stored.barrel_minor_diameter_mm, stored.target_width_mm) == (740.0, 120.0)
+
+
+def test_a_fixed_tilt_is_entered_and_the_barrel_is_then_optional(qtbot, window, tap) -> None:
+    screen = open_recipes(window, tap)
+    tap(find_button(window, "barrelType_fixed"))
+    assert screen.draft is not None and screen.draft.barrel_type is BarrelType.FIXED_TILT
+    assert find_button(window, "field_tilt_deg").isEnabled()
+    assert find_button(window, "field_tilt_deg").text().endswith("°")
+    assert screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")
+    tap(find_button(window, "barrelType_round"))
+    assert not screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")

@@ -10,7 +10,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.data.parameters import DEFAULT_PARAMETERS
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import BarrelType, Recipe
 from app.geometry.limits import DEFAULT_LIMITS
 from app.geometry.ratio import Ratio
 from app.machine.commands import JOG_DEADMAN_S, JOG_REFRESH_S
@@ -30,7 +30,7 @@ EXAMPLE = Recipe(
     thickness_mm=27.0,
     length_ratio=Ratio(1, 4),
     width_ratio=Ratio(3, 4),
-    tilt_mode=TiltMode.FIXED,
+    barrel_type=BarrelType.FIXED_TILT,
     tilt_deg=7.5,
     barrel_diameter_mm=None,
     barrel_perimeter_mm=None,
