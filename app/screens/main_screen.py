@@ -40,6 +40,7 @@ from app.machine.states import MachineState
 from app.screens.barrel_panel import BarrelPanel
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_duration, format_optional
+from app.screens.recipe_chooser import RecipeChooser
 from app.screens.texts import step_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
@@ -283,12 +284,11 @@ class MainScreen(Screen):
 
     def open_recipe_list(self) -> None:
         self.reload_recipes()
-        choices = [(f"{r.id}  {r.name}", r.id) for r in self.recipes]
-        overlay = ChoiceOverlay(
-            self.tr("Choose a recipe"),
-            choices,
-            current=self.snapshot.recipe_id if self.snapshot else None,
-            columns=2,
+        overlay = RecipeChooser(
+            self.recipes,
+            self.snapshot.recipe_id if self.snapshot else None,
+            self.context.open,
+            self.context.keyboard_layout,
         )
         overlay.chosen.connect(lambda recipe_id: self.context.send(SelectRecipe(recipe_id)))
         self.context.open(overlay)

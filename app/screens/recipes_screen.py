@@ -54,9 +54,10 @@ from app.machine.program_export import ExportFormat, export_file_name, export_te
 from app.machine.snapshot import MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number, format_optional
+from app.screens.recipe_filter import RecipeFilterBar
 from app.screens.recipe_preview import RecipePreview, preview_recipe
 from app.screens.theme import set_style_property
-from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.buttons import elided_button, touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
@@ -69,6 +70,11 @@ from app.screens.width_ranges import PENDING, WidthRanges
 DEFAULT_PREVIEW_WIDTH_MM = 150.0
 RANGE_POLL_MS = 50  # how often the list looks for width ranges the worker has finished
 LABEL_WIDTH_PX = 165
+LIST_WIDTH_PX = 220
+TEXT_ROWS = ("name", "note", "drawing")
+"""Rows whose value is text: under their label, across the form (a name is read whole)."""
+MACHINE_MARK = "▶"
+"""Marks the recipe on the machine in the list."""
 NUMBER_FIELDS = (
     "length_mm",
     "thickness_mm",
@@ -187,7 +193,11 @@ class RecipesScreen(Screen):
         self.recipe_list.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.recipe_list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.recipe_list.setTextElideMode(Qt.TextElideMode.ElideRight)
+        self.recipe_list.setWordWrap(True)  # a long name takes two lines: read whole
         self.recipe_list.itemClicked.connect(self._list_clicked)
+        self.filter_bar = RecipeFilterBar(context.open, context.keyboard_layout, compact=True)
+        self.filter_bar.changed.connect(lambda _filter: self.reload())
+        self.list_count = styled_label("", "caption", "recipeCount")
         kinetic_scroll(self.recipe_list)
         self.new_button = touch_button("newRecipe")
         self.copy_button = touch_button("copyRecipe")
@@ -207,12 +217,18 @@ class RecipesScreen(Screen):
         list_buttons.addWidget(self.import_button, 2, 0)
         list_buttons.addWidget(self.export_button, 2, 1)
         list_layout = QVBoxLayout()
-        list_layout.addWidget(self.list_title)
+        title_row = QHBoxLayout()
+        title_row.addWidget(self.list_title, 1)
+        assert self.filter_bar.type_button is not None  # a compact bar
+        title_row.addWidget(self.filter_bar.type_button)  # beside the title: room for a name
+        list_layout.addLayout(title_row)
+        list_layout.addWidget(self.filter_bar)
+        list_layout.addWidget(self.list_count)
         list_layout.addWidget(self.recipe_list, 1)
         list_layout.addLayout(list_buttons)
         self.list_widget = QWidget()
         self.list_widget.setLayout(list_layout)
-        self.list_widget.setFixedWidth(220)
+        self.list_widget.setFixedWidth(LIST_WIDTH_PX)
 
         # -- editor ----------------------------------------------------------------------------
         editor = QFrame()
@@ -251,21 +267,24 @@ class RecipesScreen(Screen):
                     button.clicked.connect(lambda _=False, k=kind: self.set_barrel_type(k))
                     mode_row.addWidget(button)
                     self.type_buttons[kind] = button
-                row.addLayout(mode_row, 0, 1, 2, 1)
+                row.addLayout(mode_row, 2, 0, 1, 2)  # three choices need the full width
             else:
-                button = touch_button(f"field_{name}", "field")
-                if name in ("name", "note", "drawing"):
+                button = elided_button(f"field_{name}", "field")
+                if name in TEXT_ROWS:
                     button.setProperty("align", "left")  # show where a long text begins
                 button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
                 # Long names and notes must not widen the form: the text is cut instead.
                 button.setMinimumWidth(150)
                 button.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
-                row.addWidget(button, 0, 1, 2, 1)
+                if name in TEXT_ROWS:
+                    row.addWidget(button, 2, 0, 1, 2)  # the text gets the row's full width
+                else:
+                    row.addWidget(button, 0, 1, 2, 1)
                 self.field_buttons[name] = button
             error = styled_label("", "error", f"error_{name}")
             error.setWordWrap(True)
             error.setVisible(False)
-            row.addWidget(error, 2, 0, 1, 2)
+            row.addWidget(error, 3, 0, 1, 2)
             rows.addLayout(row)
             self.row_widgets[name] = [label, caption, error]
             if name in self.field_buttons:
@@ -368,7 +387,7 @@ class RecipesScreen(Screen):
             "exponent": self.tr("Exponent n"),
             "semi_axis_ratio": self.tr("Semi-axis a : L/2"),
             "drawing": self.tr("Drawing (DXF)"),
-            "barrel_type": self.tr("Barrel"),
+            "barrel_type": self.tr("Barrel type"),
             "tilt_deg": self.tr("Tilt α"),
             "barrel_diameter_mm": self.tr("Barrel diameter"),
             "barrel_minor_diameter_mm": self.tr("Oval: short axis"),
@@ -410,7 +429,7 @@ class RecipesScreen(Screen):
         if name == "note":
             return self.tr("optional")
         if name == "barrel_type":
-            return self.tr("a fixed tilt, or computed from a round or oval barrel")
+            return self.tr("the tilt: fixed, or from the barrel")
         if name in FAMILY_FIELDS:
             spec = FAMILY_FIELDS[name]
             return f"{format_number(spec.minimum)} … {format_number(spec.maximum)}"
@@ -448,6 +467,7 @@ class RecipesScreen(Screen):
 
     def retranslate(self) -> None:
         self.list_title.setText(self.tr("Recipes"))
+        self.filter_bar.retranslate()
         self.new_button.setText(self.tr("New"))
         self.copy_button.setText(self.tr("Copy"))
         self.delete_button.setText(self.tr("Delete"))
@@ -479,13 +499,21 @@ class RecipesScreen(Screen):
     def reload(self, select_id: int | None = None) -> None:
         """Read the recipes again and select ``select_id`` (or keep the current one)."""
         self.recipes = self.context.database.list_recipes()
+        wanted = self.filter_bar.filter
+        shown = wanted.apply(self.recipes)
+        set_text(
+            self.list_count,
+            self.tr("%1 of %2 recipes")
+            .replace("%1", str(len(shown)))
+            .replace("%2", str(len(self.recipes))),
+        )
         keep = (
             select_id
             if select_id is not None
             else (self.current.id if self.current is not None else None)
         )
         self.recipe_list.clear()
-        for recipe in self.recipes:
+        for recipe in shown:
             item = QListWidgetItem(self._list_text(recipe))
             item.setData(Qt.ItemDataRole.UserRole, recipe.id)
             self.recipe_list.addItem(item)
@@ -517,6 +545,10 @@ class RecipesScreen(Screen):
             )
         else:
             range_text = self.tr("cuts no board here")
+        if self.snapshot is not None and self.snapshot.recipe_id == recipe.id:
+            return f"{MACHINE_MARK} {recipe.id}  {recipe.name}\n" + self.tr(
+                "on the machine, %1"
+            ).replace("%1", range_text)
         return f"{recipe.id}  {recipe.name}\n{range_text}"
 
     def fill_width_ranges(self) -> None:
@@ -759,8 +791,8 @@ class RecipesScreen(Screen):
             "name": draft.name,
             "length_mm": f"{format_number(draft.length_mm)} mm",
             "thickness_mm": f"{format_number(draft.thickness_mm)} mm",
-            "length_ratio": f"{draft.length_ratio}  = {draft.length_ratio.value:.4f}",
-            "width_ratio": f"{draft.width_ratio}  = {draft.width_ratio.value:.4f}",
+            "length_ratio": f"{draft.length_ratio} = {draft.length_ratio.value:.3f}",
+            "width_ratio": f"{draft.width_ratio} = {draft.width_ratio.value:.3f}",
             "profile_kind": self.kind_title(draft.profile.kind),
             "exponent": format_optional(dict(draft.profile.params).get("exponent"), 3, ""),
             "semi_axis_ratio": format_optional(
@@ -772,7 +804,7 @@ class RecipesScreen(Screen):
             "barrel_minor_diameter_mm": format_optional(draft.barrel_minor_diameter_mm, 1, "mm"),
             "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
             "target_width_mm": format_optional(draft.target_width_mm, 1, "mm"),
-            "note": (draft.note[:60] + "…" if len(draft.note) > 60 else draft.note) or "—",
+            "note": draft.note or "—",  # elided on the button, whole on the keyboard
         }
         for name, text in values.items():
             set_text(self.field_buttons[name], text)
@@ -827,25 +859,31 @@ class RecipesScreen(Screen):
         for row in ("barrel_diameter_mm", name):
             set_text(self.range_labels[row], self.range_text(row))
         self.field_buttons["tilt_deg"].setEnabled(not barrel)
-        set_text(self.field_labels["tilt_deg"], self.field_title("tilt_deg"))
-        set_text(self.range_labels["tilt_deg"], self.range_text("tilt_deg"))
-        if barrel:
-            set_text(self.field_buttons["tilt_deg"], self._computed_tilt_text())
+        self._show_computed_tilt()
 
-    def _computed_tilt_text(self) -> str:
-        """The tilt the barrel gives the preview's board (read-only: the machine computes it
-        for each measured board)."""
+    def _show_computed_tilt(self) -> None:
+        """With a barrel, the tilt row shows the tilt the barrel gives the preview's board,
+        read-only (the machine computes it for each measured board); its caption says so."""
+        draft = self.draft
+        if draft is None or draft.barrel_type is BarrelType.FIXED_TILT:
+            set_text(self.range_labels["tilt_deg"], self.range_text("tilt_deg"))
+            return
+        set_text(
+            self.range_labels["tilt_deg"],
+            self.tr("from the barrel, for a %1 mm board").replace(
+                "%1", format_number(self.preview_width_mm, 1)
+            ),
+        )
         preview = self.preview
         if preview is None or preview.tilt_deg is None:
-            return self.tr("computed for each board")
-        text = format_optional(preview.tilt_deg, 2, "°")
+            set_text(self.field_buttons["tilt_deg"], "—")
+            return
+        text = f"{format_number(preview.tilt_deg, 2)} °"
         if preview.tilt_b_deg is not None and preview.tilt_b_deg != preview.tilt_deg:
-            text = f"A {text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
-        return (
-            self.tr("%1 at %2 mm")
-            .replace("%1", text)
-            .replace("%2", format_number(self.preview_width_mm, 1))
-        )
+            text = (
+                f"{format_number(preview.tilt_deg, 2)} / {format_number(preview.tilt_b_deg, 2)} °"
+            )
+        set_text(self.field_buttons["tilt_deg"], text)
 
     def _show_profile_rows(self, kind: ProfileKind) -> None:
         """Only the rows the kind uses: a family's parameters, a drawing's file, lambda only
@@ -922,8 +960,7 @@ class RecipesScreen(Screen):
             tilt_text = f"A {tilt_text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
         set_text(self.result_labels["tilt"], tilt_text)
         set_text(self.preview_errors, "\n".join(errors))
-        if self.draft.barrel_type is not BarrelType.FIXED_TILT:
-            set_text(self.field_buttons["tilt_deg"], self._computed_tilt_text())
+        self._show_computed_tilt()
 
     def _width_range(self, recipe: Recipe) -> WidthRange | None:
         """The recipe's range of board widths on this machine (cached: a scan of the
@@ -1208,9 +1245,11 @@ class RecipesScreen(Screen):
             or previous.allowed.get("SelectRecipe") != snapshot.allowed.get("SelectRecipe")
         ):
             self._update_buttons()
+        if previous is None or previous.recipe_id != snapshot.recipe_id:
+            self._relabel()  # the mark moves to the recipe now on the machine
 
     def apply_scale(self, scale: float) -> None:
-        self.list_widget.setFixedWidth(round(220 * scale))
+        self.list_widget.setFixedWidth(round(LIST_WIDTH_PX * scale))
         for name in FIELDS:
             for label in (self.field_labels[name], self.range_labels[name]):
                 label.setFixedWidth(round(LABEL_WIDTH_PX * scale))

@@ -2008,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217" />
+        <location filename="../../app/screens/main_screen.py" line="+218" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2124,12 +2124,7 @@ shift</translation>
         <translation>There are no recipes yet: create one on Recipes.</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>Choose a recipe</source>
-        <translation>Choose a recipe</translation>
-    </message>
-    <message>
-        <location line="+13" />
+        <location line="+27" />
         <source>Resume the cut</source>
         <translation>Resume the cut</translation>
     </message>
@@ -2866,15 +2861,76 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>RecipeChooser</name>
+    <message>
+        <location filename="../../app/screens/recipe_chooser.py" line="+50" />
+        <source>Choose a recipe</source>
+        <translation>Choose a recipe</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>No recipe matches.</source>
+        <translation>No recipe matches.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 of %2 recipes</source>
+        <translation>%1 of %2 recipes</translation>
+    </message>
+</context>
+<context>
+    <name>RecipeFilterBar</name>
+    <message>
+        <location filename="../../app/screens/recipe_filter.py" line="+114" />
+        <source>All</source>
+        <translation>All</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fixed</source>
+        <translation>Fixed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Round</source>
+        <translation>Round</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Oval</source>
+        <translation>Oval</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Show recipes of barrel type</source>
+        <translation>Show recipes of barrel type</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Search recipes by name or number</source>
+        <translation>Search recipes by name or number</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Search…</source>
+        <translation>Search…</translation>
+    </message>
+</context>
+<context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+360" />
-        <location line="+77" />
+        <location filename="../../app/screens/recipes_screen.py" line="+377" />
+        <location line="+92" />
         <source>Recipes</source>
         <translation>Recipes</translation>
     </message>
     <message>
-        <location line="-73" />
+        <location line="-88" />
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -2919,18 +2975,22 @@ shift</translation>
         <translation>Drawing (DXF)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+82" />
+        <location line="+99" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-97" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-1" />
+        <source>Barrel type</source>
+        <translation>Barrel type</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Barrel diameter</source>
         <translation>Barrel diameter</translation>
     </message>
@@ -2980,12 +3040,7 @@ shift</translation>
         <translation>optional</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>fixed, or from the barrel</source>
-        <translation>fixed, or from the barrel</translation>
-    </message>
-    <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>the shape of both sides</source>
         <translation>the shape of both sides</translation>
     </message>
@@ -2995,7 +3050,7 @@ shift</translation>
         <translation>one side, head to head; scaled to L and W</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+20" />
         <source>Line–arc–line</source>
         <translation>Line–arc–line</translation>
     </message>
@@ -3025,7 +3080,7 @@ shift</translation>
         <translation>Drawn (DXF)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>New</source>
         <translation>New</translation>
     </message>
@@ -3036,18 +3091,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+561" />
+        <location line="+629" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-560" />
-        <location line="+610" />
+        <location line="-628" />
+        <location line="+678" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-609" />
+        <location line="-677" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -3058,38 +3113,48 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+128" />
+        <location line="+140" />
         <source>Discard</source>
         <translation>Discard</translation>
     </message>
     <message>
-        <location line="-127" />
+        <location line="-139" />
         <source>Use on machine</source>
         <translation>Use on machine</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Fixed</source>
-        <translation>Fixed</translation>
+        <location line="-46" />
+        <source>the tilt: fixed, or from the barrel</source>
+        <translation>the tilt: fixed, or from the barrel</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Fixed tilt</source>
+        <translation>Fixed tilt</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>Barrel</source>
-        <translation>Barrel</translation>
+        <source>Round</source>
+        <translation>Round</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Oval</source>
+        <translation>Oval</translation>
+    </message>
+    <message>
+        <location line="+35" />
         <source>Preview</source>
         <translation>Preview</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+368" />
+        <location line="+435" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-367" />
+        <location line="-434" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -3109,7 +3174,12 @@ shift</translation>
         <translation>Radius R</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+19" />
+        <source>%1 of %2 recipes</source>
+        <translation>%1 of %2 recipes</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1 to %2 mm</source>
         <translation>%1 to %2 mm</translation>
     </message>
@@ -3119,7 +3189,12 @@ shift</translation>
         <translation>cuts no board here</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+3" />
+        <source>on the machine, %1</source>
+        <translation>on the machine, %1</translation>
+    </message>
+    <message>
+        <location line="+63" />
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
@@ -3151,12 +3226,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+198" />
+        <location line="+254" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-196" />
+        <location line="-252" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -3171,7 +3246,7 @@ shift</translation>
         <translation>Import a DXF file…</translation>
     </message>
     <message>
-        <location line="+86" />
+        <location line="+141" />
         <source>This recipe cuts no board on this machine</source>
         <translation>This recipe cuts no board on this machine</translation>
     </message>
@@ -3186,7 +3261,7 @@ shift</translation>
         <translation>Outside the widths this recipe cuts on this machine</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Not saved</source>
         <translation>Not saved</translation>
     </message>
@@ -3284,7 +3359,12 @@ shift</translation>
         <translation>Not deleted</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-244" />
+        <source>from the barrel, for a %1 mm board</source>
+        <translation>from the barrel, for a %1 mm board</translation>
+    </message>
+    <message>
+        <location line="+249" />
         <source>Recipe %1 deleted.</source>
         <translation>Recipe %1 deleted.</translation>
     </message>
@@ -3603,7 +3683,7 @@ shift</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231" />
+        <location filename="../../app/screens/system_screen.py" line="+221" />
         <source>System</source>
         <translation>System</translation>
     </message>
@@ -3764,7 +3844,7 @@ Log in as technician or service to change them.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+120" />
+        <location filename="../../app/screens/widgets/keyboard.py" line="+122" />
         <source>Space</source>
         <translation>Space</translation>
     </message>

@@ -2008,7 +2008,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+217"/>
+        <location filename="../../app/screens/main_screen.py" line="+218"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2124,12 +2124,7 @@ izmena</translation>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Choose a recipe</source>
-        <translation>Izberite recept</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+27"/>
         <source>Resume the cut</source>
         <translation>Nadaljuj rezanje</translation>
     </message>
@@ -2866,15 +2861,76 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>RecipeChooser</name>
+    <message>
+        <location filename="../../app/screens/recipe_chooser.py" line="+50"/>
+        <source>Choose a recipe</source>
+        <translation>Izberite recept</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Cancel</source>
+        <translation>Prekliči</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>No recipe matches.</source>
+        <translation>Noben recept ne ustreza.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 of %2 recipes</source>
+        <translation>%1 od %2 receptov</translation>
+    </message>
+</context>
+<context>
+    <name>RecipeFilterBar</name>
+    <message>
+        <location filename="../../app/screens/recipe_filter.py" line="+114"/>
+        <source>All</source>
+        <translation>Vsi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fixed</source>
+        <translation>Stalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Round</source>
+        <translation>Okrogel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Oval</source>
+        <translation>Ovalen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Show recipes of barrel type</source>
+        <translation>Prikaži recepte za vrsto soda</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Search recipes by name or number</source>
+        <translation>Iskanje receptov po imenu ali številki</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Search…</source>
+        <translation>Iskanje…</translation>
+    </message>
+</context>
+<context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+360"/>
-        <location line="+77"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+377"/>
+        <location line="+92"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-88"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
@@ -2919,18 +2975,22 @@ izmena</translation>
         <translation>Risba (DXF)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+82"/>
+        <location line="+99"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-81"/>
+        <location line="-97"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
+        <source>Barrel type</source>
+        <translation>Vrsta soda</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Barrel diameter</source>
         <translation>Premer soda</translation>
     </message>
@@ -2980,12 +3040,7 @@ izmena</translation>
         <translation>neobvezno</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>fixed, or from the barrel</source>
-        <translation>stalen ali iz soda</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>the shape of both sides</source>
         <translation>oblika obeh stranic</translation>
     </message>
@@ -2995,7 +3050,7 @@ izmena</translation>
         <translation>ena stranica, od glave do glave; prilagojena L in W</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+20"/>
         <source>Line–arc–line</source>
         <translation>Premica–lok–premica</translation>
     </message>
@@ -3025,7 +3080,7 @@ izmena</translation>
         <translation>Narisan (DXF)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>New</source>
         <translation>Nov</translation>
     </message>
@@ -3036,18 +3091,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+561"/>
+        <location line="+629"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-560"/>
-        <location line="+610"/>
+        <location line="-628"/>
+        <location line="+678"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-609"/>
+        <location line="-677"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -3058,38 +3113,48 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+128"/>
+        <location line="+140"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-139"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Fixed</source>
-        <translation>Stalen</translation>
+        <location line="-46"/>
+        <source>the tilt: fixed, or from the barrel</source>
+        <translation>nagib: stalen ali iz soda</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Fixed tilt</source>
+        <translation>Stalen nagib</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Barrel</source>
-        <translation>Iz soda</translation>
+        <source>Round</source>
+        <translation>Okrogel</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Oval</source>
+        <translation>Ovalen</translation>
+    </message>
+    <message>
+        <location line="+35"/>
         <source>Preview</source>
         <translation>Predogled</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+368"/>
+        <location line="+435"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-434"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -3109,7 +3174,12 @@ izmena</translation>
         <translation>Polmer R</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+19"/>
+        <source>%1 of %2 recipes</source>
+        <translation>%1 od %2 receptov</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>%1 to %2 mm</source>
         <translation>%1 do %2 mm</translation>
     </message>
@@ -3119,7 +3189,12 @@ izmena</translation>
         <translation>tu ne reže nobene deske</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+3"/>
+        <source>on the machine, %1</source>
+        <translation>na stroju, %1</translation>
+    </message>
+    <message>
+        <location line="+63"/>
         <source>Unsaved changes</source>
         <translation>Neshranjene spremembe</translation>
     </message>
@@ -3151,12 +3226,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+198"/>
+        <location line="+254"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-252"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -3171,7 +3246,7 @@ izmena</translation>
         <translation>Uvozi datoteko DXF…</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+141"/>
         <source>This recipe cuts no board on this machine</source>
         <translation>Ta recept na tem stroju ne reže nobene deske</translation>
     </message>
@@ -3186,7 +3261,7 @@ izmena</translation>
         <translation>Zunaj širin, ki jih ta recept reže na tem stroju</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>
@@ -3284,7 +3359,12 @@ izmena</translation>
         <translation>Ni izbrisano</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-244"/>
+        <source>from the barrel, for a %1 mm board</source>
+        <translation>iz soda, za desko %1 mm</translation>
+    </message>
+    <message>
+        <location line="+249"/>
         <source>Recipe %1 deleted.</source>
         <translation>Recept %1 je izbrisan.</translation>
     </message>
@@ -3603,7 +3683,7 @@ izmena</translation>
 <context>
     <name>SystemScreen</name>
     <message>
-        <location filename="../../app/screens/system_screen.py" line="+231"/>
+        <location filename="../../app/screens/system_screen.py" line="+221"/>
         <source>System</source>
         <translation>Sistem</translation>
     </message>
@@ -3764,7 +3844,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+120"/>
+        <location filename="../../app/screens/widgets/keyboard.py" line="+122"/>
         <source>Space</source>
         <translation>Presledek</translation>
     </message>

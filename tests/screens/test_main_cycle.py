@@ -4,6 +4,7 @@ a whole simulated cycle finish and the counter rise."""
 from __future__ import annotations
 
 from app.machine.states import MachineState
+from app.screens.recipe_chooser import RecipeChooser
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.lamp import LampColor
 from tests.screens.helpers import find_button, home_from_main_screen, wait_for
@@ -35,7 +36,7 @@ def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, ta
     # Pick the second recipe from the list.
     tap(find_button(window, "recipeList"))
     overlay = window.overlay()
-    assert isinstance(overlay, ChoiceOverlay)
+    assert isinstance(overlay, RecipeChooser)
     tap(overlay.buttons[1])
     wait_for(qtbot, window, lambda s: s.recipe_id == recipes[1].id)
     assert main.number_label.text() == f"No. {recipes[1].id}"

@@ -4,9 +4,17 @@ keypads and checked by the recipe's own rules; the preview shows both sides' til
 from __future__ import annotations
 
 from app.data.recipe import BarrelType
+from app.screens.formatting import format_number
 from app.screens.widgets.keypad import NumberKeypad
 from tests.screens.helpers import find_button
 from tests.screens.test_recipes_screen import keys, open_recipes
+
+
+def tap_choice(window, tap, name: str) -> None:
+    """Tap a button of the recipe form, scrolled into view first (as a finger would)."""
+    button = find_button(window, name)
+    window.page("recipes").form_scroll.ensureWidgetVisible(button)
+    tap(button)
 
 
 def enter(window, tap, field: str, text: str) -> NumberKeypad:
@@ -29,9 +37,11 @@ def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
     assert not find_button(window, "field_barrel_minor_diameter_mm").isVisible()
     # The tilt comes from the barrel: shown, not entered; the diameter is not optional.
     tilt_row = find_button(window, "field_tilt_deg")
-    assert not tilt_row.isEnabled() and tilt_row.text().endswith(" mm")
+    assert not tilt_row.isEnabled()
+    assert tilt_row.text() == f"{format_number(screen.preview.tilt_deg, 2)} °"
+    assert screen.range_labels["tilt_deg"].text() == "from the barrel, for a 150 mm board"
     assert screen.range_labels["barrel_diameter_mm"].text().endswith("mm")
-    tap(find_button(window, "barrelType_oval"))
+    tap_choice(window, tap, "barrelType_oval")
     assert screen.draft.barrel_type is BarrelType.OVAL
     assert find_button(window, "field_barrel_minor_diameter_mm").isVisible()
     assert "oval barrel needs it" in screen.error_labels["barrel_minor_diameter_mm"].text()
@@ -45,6 +55,8 @@ def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
     assert preview.ok and preview.tilt_deg != preview.tilt_b_deg
     tilt_text = screen.result_labels["tilt"].text()
     assert tilt_text.startswith("A ") and " / B " in tilt_text
+    both = f"{format_number(preview.tilt_deg, 2)} / {format_number(preview.tilt_b_deg, 2)} °"
+    assert find_button(window, "field_tilt_deg").text() == both
 
     assert enter(window, tap, "target_width_mm", "300").is_open  # wider than any board
     tap(find_button(window.overlay(), "cancelButton"))
@@ -56,10 +68,10 @@ def test_an_oval_recipe_on_the_keypads(qtbot, window, database, tap) -> None:
 
 def test_a_fixed_tilt_is_entered_and_the_barrel_is_then_optional(qtbot, window, tap) -> None:
     screen = open_recipes(window, tap)
-    tap(find_button(window, "barrelType_fixed"))
+    tap_choice(window, tap, "barrelType_fixed")
     assert screen.draft is not None and screen.draft.barrel_type is BarrelType.FIXED_TILT
     assert find_button(window, "field_tilt_deg").isEnabled()
     assert find_button(window, "field_tilt_deg").text().endswith("°")
     assert screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")
-    tap(find_button(window, "barrelType_round"))
+    tap_choice(window, tap, "barrelType_round")
     assert not screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")

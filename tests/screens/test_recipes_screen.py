@@ -267,4 +267,8 @@ def test_the_list_shows_each_recipes_widths_on_this_machine(qtbot, window, datab
         widths = cuttable_widths(recipe.stave, parameters, database.limits)  # the machine's own
         assert widths is not None, recipe.name  # the shipped recipes fit the shipped machine
         expected = f"{format_number(widths.min_mm, 1)} to {format_number(widths.max_mm, 1)} mm"
-        assert item.text() == f"{recipe.id}  {recipe.name}\n{expected}"
+        if window.poller.snapshot.recipe_id == recipe.id:  # marked
+            expected = f"on the machine, {expected}"
+            assert item.text() == f"▶ {recipe.id}  {recipe.name}\n{expected}"
+        else:
+            assert item.text() == f"{recipe.id}  {recipe.name}\n{expected}"
