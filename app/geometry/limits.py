@@ -202,6 +202,21 @@ def _check_barrel_diameter(
     errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
 
 
+def width_ratio_minimum(limits: StaveLimits) -> float:
+    """The smallest width ratio k a recipe may have: below it, even the widest board's head
+    is narrower than the minimum head width (the recipe form's hint states the same bound)."""
+    return limits.min_head_width_mm / limits.max_width_mm
+
+
+def recipe_tilt_range(width_ratio: float, limits: StaveLimits) -> tuple[float, float]:
+    """The fixed tilts (deg) a recipe of width ratio ``width_ratio`` may have: some board of
+    min_head_width / k .. max_width mm then gives a barrel belly diameter W/sin(tilt) within
+    the limits (some width in that span fits iff sin(tilt) lies in this range)."""
+    low = _tilt_range_for_width(limits.min_head_width_mm / width_ratio, limits)[0]
+    high = _tilt_range_for_width(limits.max_width_mm, limits)[1]
+    return low, high
+
+
 def validate_recipe_fields(
     length_mm: object,
     thickness_mm: object | None,
@@ -224,7 +239,7 @@ def validate_recipe_fields(
     tilt = None if tilt_deg is None else _check_tilt(tilt_deg, limits, errors)
 
     if k is not None:
-        k_min = limits.min_head_width_mm / limits.max_width_mm
+        k_min = width_ratio_minimum(limits)
         if k < k_min:
             allowed = (
                 f"{format_value(limits.min_head_width_mm)}/{format_value(limits.max_width_mm)}"
@@ -258,9 +273,7 @@ def validate_recipe_fields(
                 f"{format_value(limits.min_barrel_diameter_mm)}.."
                 f"{format_value(limits.max_barrel_diameter_mm)} mm"
             )
-            # Some width in [width_low, max_width] fits iff sin(tilt) lies in this range.
-            low = _tilt_range_for_width(width_low, limits)[0]
-            high = _tilt_range_for_width(limits.max_width_mm, limits)[1]
+            low, high = recipe_tilt_range(k, limits)
             allowed = f"{low:.3f} <= tilt <= {high:.3f} deg"
             errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
     return errors

@@ -39,7 +39,7 @@ from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, BarrelType, Recipe
 from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
 from app.geometry.errors import FieldError
-from app.geometry.limits import StaveLimits
+from app.geometry.limits import StaveLimits, recipe_tilt_range, width_ratio_minimum
 from app.geometry.profile_kinds import (
     EXPONENT,
     SEMI_AXIS_RATIO,
@@ -398,8 +398,17 @@ class RecipesScreen(Screen):
         return titles[name]
 
     def field_range(self, name: str) -> tuple[float, float, str]:
-        """(minimum, maximum, unit) of a number field, from the machine's limits."""
+        """(minimum, maximum, unit) of a number field, from the machine's limits; a fixed
+        tilt's from the draft's width ratio too (the recipe's validation refuses a tilt for
+        which no board of the recipe fits a barrel within the limits)."""
         limits = self.limits
+        if name == "tilt_deg" and self.draft is not None:
+            k = self.draft.width_ratio.value
+            if 0.0 < k < 1.0:
+                low, high = recipe_tilt_range(k, limits)
+                if low <= high:
+                    # Rounded inwards: the keypad never offers a bound the rule refuses.
+                    return (math.ceil(low * 100) / 100, math.floor(high * 100) / 100, "°")
         d_low = limits.min_barrel_diameter_mm or 1.0
         d_high = limits.max_barrel_diameter_mm or 100_000.0
         ranges = {
@@ -414,6 +423,8 @@ class RecipesScreen(Screen):
         return ranges[name]
 
     def range_text(self, name: str) -> str:
+        """The hint under a field: the bounds the recipe's validation applies, computed by
+        the same functions (a hint must never promise what Save then refuses)."""
         if name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             text = f"{format_number(low)} … {format_number(high)} {unit}"
@@ -423,7 +434,9 @@ class RecipesScreen(Screen):
         if name == "length_ratio":
             return self.tr("0 to below 1/2")
         if name == "width_ratio":
-            return self.tr("above 0, below 1")
+            return self.tr("%1 to below 1").replace(
+                "%1", format_number(width_ratio_minimum(self.limits), 3)
+            )
         if name == "name":
             return self.tr("1 to %1 characters").replace("%1", str(NAME_MAX_CHARS))
         if name == "note":

@@ -2925,12 +2925,12 @@ shift</translation>
     <name>RecipesScreen</name>
     <message>
         <location filename="../../app/screens/recipes_screen.py" line="+377" />
-        <location line="+92" />
+        <location line="+105" />
         <source>Recipes</source>
         <translation>Recipes</translation>
     </message>
     <message>
-        <location line="-88" />
+        <location line="-101" />
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -2975,12 +2975,12 @@ shift</translation>
         <translation>Drawing (DXF)</translation>
     </message>
     <message>
-        <location line="+99" />
+        <location line="+112" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-97" />
+        <location line="-110" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
@@ -3015,7 +3015,7 @@ shift</translation>
         <translation>Note</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+36" />
         <source>(optional)</source>
         <translation>(optional)</translation>
     </message>
@@ -3025,12 +3025,7 @@ shift</translation>
         <translation>0 to below 1/2</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>above 0, below 1</source>
-        <translation>above 0, below 1</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+6" />
         <source>1 to %1 characters</source>
         <translation>1 to %1 characters</translation>
     </message>
@@ -3091,18 +3086,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+629" />
+        <location line="+631" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-628" />
-        <location line="+678" />
+        <location line="-630" />
+        <location line="+680" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-677" />
+        <location line="-679" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -3128,7 +3123,12 @@ shift</translation>
         <translation>the tilt: fixed, or from the barrel</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="-8" />
+        <source>%1 to below 1</source>
+        <translation>%1 to below 1</translation>
+    </message>
+    <message>
+        <location line="+20" />
         <source>Fixed tilt</source>
         <translation>Fixed tilt</translation>
     </message>
@@ -3149,12 +3149,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+435" />
+        <location line="+437" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-434" />
+        <location line="-436" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -3226,12 +3226,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+254" />
+        <location line="+256" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-252" />
+        <location line="-254" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -3246,7 +3246,7 @@ shift</translation>
         <translation>Import a DXF file…</translation>
     </message>
     <message>
-        <location line="+141" />
+        <location line="+143" />
         <source>This recipe cuts no board on this machine</source>
         <translation>This recipe cuts no board on this machine</translation>
     </message>
@@ -3359,12 +3359,12 @@ shift</translation>
         <translation>Not deleted</translation>
     </message>
     <message>
-        <location line="-244" />
+        <location line="-246" />
         <source>from the barrel, for a %1 mm board</source>
         <translation>from the barrel, for a %1 mm board</translation>
     </message>
     <message>
-        <location line="+249" />
+        <location line="+251" />
         <source>Recipe %1 deleted.</source>
         <translation>Recipe %1 deleted.</translation>
     </message>

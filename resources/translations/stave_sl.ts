@@ -2925,12 +2925,12 @@ izmena</translation>
     <name>RecipesScreen</name>
     <message>
         <location filename="../../app/screens/recipes_screen.py" line="+377"/>
-        <location line="+92"/>
+        <location line="+105"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-88"/>
+        <location line="-101"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
@@ -2975,12 +2975,12 @@ izmena</translation>
         <translation>Risba (DXF)</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+112"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-97"/>
+        <location line="-110"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
@@ -3015,7 +3015,7 @@ izmena</translation>
         <translation>Opomba</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+36"/>
         <source>(optional)</source>
         <translation>(neobvezno)</translation>
     </message>
@@ -3025,12 +3025,7 @@ izmena</translation>
         <translation>od 0 do manj kot 1/2</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>above 0, below 1</source>
-        <translation>več kot 0, manj kot 1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>1 to %1 characters</source>
         <translation>od 1 do %1 znakov</translation>
     </message>
@@ -3091,18 +3086,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+629"/>
+        <location line="+631"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-628"/>
-        <location line="+678"/>
+        <location line="-630"/>
+        <location line="+680"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-677"/>
+        <location line="-679"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -3128,7 +3123,12 @@ izmena</translation>
         <translation>nagib: stalen ali iz soda</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-8"/>
+        <source>%1 to below 1</source>
+        <translation>od %1 do manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Fixed tilt</source>
         <translation>Stalen nagib</translation>
     </message>
@@ -3149,12 +3149,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+435"/>
+        <location line="+437"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-434"/>
+        <location line="-436"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -3226,12 +3226,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+254"/>
+        <location line="+256"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-252"/>
+        <location line="-254"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -3246,7 +3246,7 @@ izmena</translation>
         <translation>Uvozi datoteko DXF…</translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+143"/>
         <source>This recipe cuts no board on this machine</source>
         <translation>Ta recept na tem stroju ne reže nobene deske</translation>
     </message>
@@ -3359,12 +3359,12 @@ izmena</translation>
         <translation>Ni izbrisano</translation>
     </message>
     <message>
-        <location line="-244"/>
+        <location line="-246"/>
         <source>from the barrel, for a %1 mm board</source>
         <translation>iz soda, za desko %1 mm</translation>
     </message>
     <message>
-        <location line="+249"/>
+        <location line="+251"/>
         <source>Recipe %1 deleted.</source>
         <translation>Recept %1 je izbrisan.</translation>
     </message>

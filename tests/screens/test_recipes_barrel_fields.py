@@ -4,6 +4,8 @@ keypads and checked by the recipe's own rules; the preview shows both sides' til
 from __future__ import annotations
 
 from app.data.recipe import BarrelType
+from app.geometry.limits import width_ratio_minimum
+from app.geometry.ratio import Ratio
 from app.screens.formatting import format_number
 from app.screens.widgets.keypad import NumberKeypad
 from tests.screens.helpers import find_button
@@ -75,3 +77,23 @@ def test_a_fixed_tilt_is_entered_and_the_barrel_is_then_optional(qtbot, window, 
     assert screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")
     tap_choice(window, tap, "barrelType_round")
     assert not screen.range_labels["barrel_diameter_mm"].text().endswith("(optional)")
+
+
+def test_the_hints_state_the_bounds_the_validation_applies(qtbot, window, tap) -> None:
+    """The width ratio's hint names the smallest ratio the validation accepts (it used to say
+    "above 0" while 1/10 was refused), and a fixed tilt's the tilts that fit a barrel."""
+    screen = open_recipes(window, tap)
+    tap_choice(window, tap, "barrelType_fixed")
+    limits = screen.limits
+    k_min = width_ratio_minimum(limits)
+    assert screen.range_labels["width_ratio"].text() == f"{format_number(k_min, 3)} to below 1"
+    below = Ratio(1, 10)
+    assert below.value < k_min and screen._check("width_ratio", below)  # refused, as hinted
+    assert screen._check("width_ratio", Ratio(1, 4)) == ""
+    low, high, unit = screen.field_range("tilt_deg")
+    assert unit == "°" and limits.min_tilt_deg < low < high <= limits.max_tilt_deg
+    assert screen.range_labels["tilt_deg"].text() == (
+        f"{format_number(low)} … {format_number(high)} °"
+    )
+    assert screen._check("tilt_deg", low) == "" and screen._check("tilt_deg", high) == ""
+    assert screen._check("tilt_deg", low - 0.02) and screen._check("tilt_deg", high + 0.02)
