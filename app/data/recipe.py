@@ -52,9 +52,11 @@ from app.geometry.errors import (
     format_value,
     not_a_number,
     out_of_range,
+    worded,
 )
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, validate_recipe_fields
 from app.geometry.ratio import Ratio
+from app.geometry.rule_texts import RuleText
 from app.geometry.stave_cut import StaveSpec
 
 NAME_MAX_CHARS = 40
@@ -163,18 +165,23 @@ def _check_name(name: object, errors: list[FieldError]) -> None:
     if not isinstance(name, str):
         errors.append(not_a_text("name", name, allowed))
     elif not name.strip():
-        errors.append(FieldError("name", name, allowed, f"name is empty: allowed {allowed}"))
+        error = FieldError("name", name, allowed, f"name is empty: allowed {allowed}")
+        errors.append(worded(error, RuleText.NAME_EMPTY, NAME_MAX_CHARS))
     elif name != name.strip() or len(name) > NAME_MAX_CHARS:
-        errors.append(out_of_range("name", name, allowed))
+        errors.append(
+            worded(out_of_range("name", name, allowed), RuleText.NAME_LENGTH, NAME_MAX_CHARS)
+        )
     elif any(not ch.isprintable() for ch in name):
         message = f"name = {name!r} contains a control character: allowed {allowed}"
-        errors.append(FieldError("name", name, allowed, message))
+        errors.append(worded(FieldError("name", name, allowed, message), RuleText.NAME_CONTROL))
 
 
 def not_a_text(field: str, value: object, allowed: str) -> FieldError:
     """The error for a value that should have been text."""
     message = f"{field} = {format_value(value)} is not text: allowed {allowed}"
-    return FieldError(field, value, allowed, message)
+    return worded(
+        FieldError(field, value, allowed, message), RuleText.NOT_TEXT, format_value(value)
+    )
 
 
 def _diameter_bounds(limits: StaveLimits) -> tuple[float, float]:
@@ -189,15 +196,18 @@ def _check_optional_positive(
     if value is None:
         return None
     allowed = f"empty, or {format_value(low)} <= {field} <= {format_value(high)} mm"
+    shown = format_value(value)
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), RuleText.NOT_A_NUMBER, shown))
         return None
     number = float(value)
     if not math.isfinite(number):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), RuleText.NOT_A_NUMBER, shown))
         return None
     if not (low <= number <= high and number > 0):
-        errors.append(out_of_range(field, value, allowed))
+        error = out_of_range(field, value, allowed)
+        rule = RuleText.OPTIONAL_BETWEEN
+        errors.append(worded(error, rule, value, round(low, 1), round(high, 1), "mm"))
         return None
     return number
 
@@ -251,11 +261,11 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
                 f"target_width_mm >= {format_value(limits.min_head_width_mm)} / width ratio "
                 f"= {limits.min_head_width_mm / recipe.width_ratio.value:.1f} mm"
             )
-            errors.append(
-                out_of_range(
-                    "target_width_mm", target, allowed, f"the head would be {head:.1f} mm wide"
-                )
+            error = out_of_range(
+                "target_width_mm", target, allowed, f"the head would be {head:.1f} mm wide"
             )
+            least = round(limits.min_head_width_mm / recipe.width_ratio.value, 1)
+            errors.append(worded(error, RuleText.TARGET_HEAD, target, round(head, 1), least))
 
     if not isinstance(recipe.barrel_type, BarrelType):
         errors.append(unknown_barrel_type(recipe.barrel_type))
@@ -266,7 +276,8 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
                 f"barrel_diameter_mm is missing: a {recipe.barrel_type.value} barrel computes "
                 f"the tilt from it (allowed {allowed})"
             )
-            errors.append(FieldError("barrel_diameter_mm", None, allowed, message))
+            error = FieldError("barrel_diameter_mm", None, allowed, message)
+            errors.append(worded(error, RuleText.DIAMETER_MISSING, d_low, d_high))
         elif diameter is not None and isinstance(recipe.width_ratio, Ratio):
             k = recipe.width_ratio.value
             if 0 < k <= 1:
@@ -277,7 +288,8 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
     elif len(recipe.note) > NOTE_MAX_CHARS:
         allowed = f"at most {NOTE_MAX_CHARS} characters"
         message = f"note is {len(recipe.note)} characters long: allowed {allowed}"
-        errors.append(FieldError("note", recipe.note, allowed, message))
+        error = FieldError("note", recipe.note, allowed, message)
+        errors.append(worded(error, RuleText.NOTE_LONG, len(recipe.note), NOTE_MAX_CHARS))
     if isinstance(recipe.profile, RecipeProfile):
         errors.extend(recipe.profile.validate())
     else:
@@ -289,7 +301,8 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
 def unknown_barrel_type(value: object) -> FieldError:
     """The refusal of a barrel type that is none of the three."""
     message = f"barrel_type = {format_value(value)} is unknown: allowed {BARREL_TYPE_ALLOWED}"
-    return FieldError("barrel_type", value, BARREL_TYPE_ALLOWED, message)
+    error = FieldError("barrel_type", value, BARREL_TYPE_ALLOWED, message)
+    return worded(error, RuleText.BARREL_TYPE, format_value(value))
 
 
 def _check_short_axis(recipe: Recipe, errors: list[FieldError]) -> None:
@@ -299,7 +312,8 @@ def _check_short_axis(recipe: Recipe, errors: list[FieldError]) -> None:
     if kind is BarrelType.OVAL and minor is None:
         allowed = "the oval's short belly axis in mm, at most barrel_diameter_mm"
         message = f"barrel_minor_diameter_mm is missing: an oval barrel needs it ({allowed})"
-        errors.append(FieldError("barrel_minor_diameter_mm", None, allowed, message))
+        error = FieldError("barrel_minor_diameter_mm", None, allowed, message)
+        errors.append(worded(error, RuleText.SHORT_AXIS_MISSING))
     elif kind in (BarrelType.FIXED_TILT, BarrelType.ROUND) and minor is not None:
         allowed = "empty unless barrel_type is 'oval'"
         use = "a fixed tilt" if kind is BarrelType.FIXED_TILT else "a round barrel"
@@ -307,7 +321,13 @@ def _check_short_axis(recipe: Recipe, errors: list[FieldError]) -> None:
             f"barrel_minor_diameter_mm = {format_value(minor)} has no use with {use}: "
             f"allowed {allowed}"
         )
-        errors.append(FieldError("barrel_minor_diameter_mm", minor, allowed, message))
+        rule = (
+            RuleText.SHORT_AXIS_FIXED
+            if kind is BarrelType.FIXED_TILT
+            else RuleText.SHORT_AXIS_ROUND
+        )
+        error = FieldError("barrel_minor_diameter_mm", minor, allowed, message)
+        errors.append(worded(error, rule, minor))
 
 
 def _check_oval(major_mm: float, minor_mm: float, errors: list[FieldError]) -> None:
@@ -319,7 +339,9 @@ def _check_oval(major_mm: float, minor_mm: float, errors: list[FieldError]) -> N
             f"{format_value(major_mm)} mm"
         )
         note = "the oval's short belly axis; the long one is barrel_diameter_mm"
-        errors.append(out_of_range("barrel_minor_diameter_mm", minor_mm, allowed, note))
+        error = out_of_range("barrel_minor_diameter_mm", minor_mm, allowed, note)
+        rule = RuleText.SHORT_AXIS_BETWEEN
+        errors.append(worded(error, rule, minor_mm, round(low, 1), major_mm))
 
 
 def _ratio_value(ratio: object) -> object:

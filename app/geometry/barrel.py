@@ -21,8 +21,16 @@ import numbers
 from dataclasses import dataclass
 
 from app.geometry.bevel import SideTilts
-from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.errors import (
+    FieldError,
+    GeometryError,
+    format_value,
+    not_a_number,
+    out_of_range,
+    worded,
+)
 from app.geometry.limits import StaveLimits
+from app.geometry.rule_texts import RuleText
 
 
 def barrel_tilt_deg(width_mm: object, diameter_mm: float | None, limits: StaveLimits) -> float:
@@ -82,7 +90,11 @@ def barrel_width_errors(
         f"barrel_diameter_mm = {format_value(diameter_mm)} fits no board of this recipe: "
         f"allowed {allowed}"
     )
-    return [FieldError("barrel_diameter_mm", diameter_mm, allowed, message)]
+    error = FieldError("barrel_diameter_mm", diameter_mm, allowed, message)
+    rule = RuleText.BARREL_FITS_NO_BOARD
+    widths = (round(limits.min_head_width_mm / width_ratio, 1), limits.max_width_mm)
+    tilts = (limits.min_tilt_deg, limits.max_tilt_deg)
+    return [worded(error, rule, diameter_mm, *widths, *tilts)]
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,12 @@ import math
 import numbers
 from dataclasses import dataclass
 
-from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
+from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range, worded
+from app.geometry.rule_texts import RuleText
+
+NOT_NUMBER = RuleText.NOT_A_NUMBER
+UNIT_WORDS = {"deg": "°"}
+"""Units as the screens write them."""
 
 
 @dataclass(frozen=True)
@@ -59,11 +64,11 @@ DEFAULT_LIMITS = StaveLimits()
 def _finite(field: str, value: object, allowed: str, errors: list[FieldError]) -> float | None:
     """The value as a float if it is a finite real number; otherwise record an error."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), NOT_NUMBER, format_value(value)))
         return None
     number = float(value)
     if not math.isfinite(number):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), NOT_NUMBER, format_value(value)))
         return None
     return number
 
@@ -82,7 +87,8 @@ def _in_closed_range(
     if number is None:
         return None
     if not low <= number <= high:
-        errors.append(out_of_range(field, value, allowed))
+        error = out_of_range(field, value, allowed)
+        errors.append(worded(error, RuleText.BETWEEN, value, low, high, UNIT_WORDS.get(unit, unit)))
         return None
     return number
 
@@ -128,10 +134,12 @@ def _check_length_ratio(value: object, errors: list[FieldError]) -> float | None
     if number is None:
         return None
     if number < 0.0:
-        errors.append(out_of_range("length_ratio", value, allowed))
+        error = out_of_range("length_ratio", value, allowed)
+        errors.append(worded(error, RuleText.LENGTH_RATIO, value))
         return None
     if number >= 0.5:
-        errors.append(out_of_range("length_ratio", value, allowed, "no arc is left at 1/2 or more"))
+        error = out_of_range("length_ratio", value, allowed, "no arc is left at 1/2 or more")
+        errors.append(worded(error, RuleText.LENGTH_RATIO, value))
         return None
     return number
 
@@ -146,10 +154,12 @@ def _check_width_ratio(value: object, errors: list[FieldError]) -> float | None:
             f"width_ratio = {format_value(value)} leaves nothing to cut "
             f"(head as wide as the belly): allowed {allowed}"
         )
-        errors.append(FieldError("width_ratio", value, allowed, message))
+        error = FieldError("width_ratio", value, allowed, message)
+        errors.append(worded(error, RuleText.WIDTH_RATIO_ONE, value))
         return None
     if not 0.0 < number < 1.0:
-        errors.append(out_of_range("width_ratio", value, allowed))
+        error = out_of_range("width_ratio", value, allowed)
+        errors.append(worded(error, RuleText.WIDTH_RATIO_RANGE, value))
         return None
     return number
 
@@ -249,7 +259,10 @@ def validate_recipe_fields(
                 f"the head would be narrower than {format_value(limits.min_head_width_mm)} mm "
                 f"even on a board of {format_value(limits.max_width_mm)} mm"
             )
-            errors.append(out_of_range("width_ratio", width_ratio, allowed, note))
+            error = out_of_range("width_ratio", width_ratio, allowed, note)
+            rule = RuleText.WIDTH_RATIO_NARROW
+            head, board = limits.min_head_width_mm, limits.max_width_mm
+            errors.append(worded(error, rule, width_ratio, head, board, round(k_min, 3)))
             k = None
 
     if k is not None and tilt is not None:
@@ -275,7 +288,11 @@ def validate_recipe_fields(
             )
             low, high = recipe_tilt_range(k, limits)
             allowed = f"{low:.3f} <= tilt <= {high:.3f} deg"
-            errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+            error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+            rule = RuleText.TILT_FITS_NO_BARREL
+            d_low, d_high = limits.min_barrel_diameter_mm, limits.max_barrel_diameter_mm
+            bounds = (d_low, d_high, round(low, 2), round(high, 2))
+            errors.append(worded(error, rule, tilt_deg, *bounds))
     return errors
 
 

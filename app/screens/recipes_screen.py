@@ -56,6 +56,7 @@ from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number, format_optional
 from app.screens.recipe_filter import RecipeFilterBar
 from app.screens.recipe_preview import RecipePreview, preview_recipe
+from app.screens.texts import rule_message
 from app.screens.theme import set_style_property
 from app.screens.widgets.buttons import elided_button, touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
@@ -725,7 +726,7 @@ class RecipesScreen(Screen):
                     .replace("%1", value)
                     .replace("%2", str(clash.id))
                 )
-        return "\n".join(p.message for p in problems)
+        return "\n".join(rule_message(p) for p in problems)
 
     @staticmethod
     def _with(recipe: Recipe, name: str, value: object) -> Recipe:
@@ -829,7 +830,7 @@ class RecipesScreen(Screen):
         for name in FIELDS:
             problems = self.errors.get(name, [])
             label = self.error_labels[name]
-            set_text(label, "\n".join(p.message for p in problems))
+            set_text(label, "\n".join(rule_message(p) for p in problems))
             label.setVisible(bool(problems))
             field_button = self.field_buttons.get(name)
             if field_button is not None:
@@ -997,7 +998,7 @@ class RecipesScreen(Screen):
             saved = self.context.database.save_recipe(draft, user)
         except FieldValidationError as exc:
             self.errors = {}
-            lines = [e.message for e in exc.errors]
+            lines = [rule_message(e) for e in exc.errors]
             self.show_draft()
             self._message(self.tr("Recipe not saved"), "\n".join(lines))
             return

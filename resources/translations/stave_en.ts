@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+64" />
+        <location filename="../../app/screens/texts.py" line="+69" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -2924,7 +2924,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+377" />
+        <location filename="../../app/screens/recipes_screen.py" line="+378" />
         <location line="+105" />
         <source>Recipes</source>
         <translation>Recipes</translation>
@@ -3469,6 +3469,144 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>RuleText</name>
+    <message>
+        <location filename="catalogue_strings.py" line="+1" />
+        <source>%1 is not a barrel type: allowed fixed tilt, round or oval</source>
+        <translation>%1 is not a barrel type: allowed fixed tilt, round or oval</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a number</source>
+        <translation>%1 is not a number</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a text</source>
+        <translation>%1 is not a text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not allowed: above 0 and below 1</source>
+        <translation>%1 is not allowed: above 0 and below 1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</source>
+        <translation>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is outside the allowed range: %2 to %3 %4</source>
+        <translation>%1 is outside the allowed range: %2 to %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is outside the allowed range: empty, or %2 to %3 %4</source>
+        <translation>%1 is outside the allowed range: empty, or %2 to %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</source>
+        <translation>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</source>
+        <translation>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</source>
+        <translation>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</source>
+        <translation>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 mm would make the head %2 mm wide: allowed %3 mm or more</source>
+        <translation>%1 mm would make the head %2 mm wide: allowed %3 mm or more</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</source>
+        <translation>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A drawn profile needs a drawing: import a DXF file</source>
+        <translation>A drawn profile needs a drawing: import a DXF file</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</source>
+        <translation>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>An oval barrel needs its short axis</source>
+        <translation>An oval barrel needs its short axis</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Only a drawn side profile keeps a drawing</source>
+        <translation>Only a drawn side profile keeps a drawing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The drawing's file is not recorded: import the DXF file again</source>
+        <translation>The drawing's file is not recorded: import the DXF file again</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name contains a control character</source>
+        <translation>The name contains a control character</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name is empty: allowed 1 to %1 characters</source>
+        <translation>The name is empty: allowed 1 to %1 characters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name must have 1 to %1 characters, with no space at its start or end</source>
+        <translation>The name must have 1 to %1 characters, with no space at its start or end</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The note has %1 characters: allowed at most %2</source>
+        <translation>The note has %1 characters: allowed at most %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>This side profile has no parameters</source>
+        <translation>This side profile has no parameters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>This side profile has no such parameter</source>
+        <translation>This side profile has no such parameter</translation>
+    </message>
+    <message>
+        <location filename="../../app/screens/texts.py" line="-49" />
+        <source>This value is not allowed</source>
+        <translation>This value is not allowed</translation>
+    </message>
+</context>
+<context>
     <name>SimPendantPanel</name>
     <message>
         <location filename="../../app/screens/widgets/sim_pendant.py" line="+168" />
@@ -3509,7 +3647,7 @@ shift</translation>
 <context>
     <name>States</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="-44" />
+        <location filename="../../app/screens/texts.py" line="+5" />
         <source>STARTING UP</source>
         <translation>STARTING UP</translation>
     </message>

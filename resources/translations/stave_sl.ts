@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+64"/>
+        <location filename="../../app/screens/texts.py" line="+69"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -2924,7 +2924,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+377"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+378"/>
         <location line="+105"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
@@ -3469,6 +3469,144 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>RuleText</name>
+    <message>
+        <location filename="catalogue_strings.py" line="+1"/>
+        <source>%1 is not a barrel type: allowed fixed tilt, round or oval</source>
+        <translation>%1 ni vrsta soda: dovoljeno stalen nagib, okrogel ali ovalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a number</source>
+        <translation>%1 ni število</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a text</source>
+        <translation>%1 ni besedilo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not allowed: above 0 and below 1</source>
+        <translation>%1 ni dovoljeno: več kot 0 in manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</source>
+        <translation>%1 ni dovoljeno: od 0 do manj kot 1/2 (pri 1/2 ali več ne ostane noben lok)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is outside the allowed range: %2 to %3 %4</source>
+        <translation>%1 je zunaj dovoljenega območja: od %2 do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is outside the allowed range: empty, or %2 to %3 %4</source>
+        <translation>%1 je zunaj dovoljenega območja: prazno ali od %2 do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</source>
+        <translation>%1 ne pusti ničesar za rezanje (glava je široka kot trebuh): dovoljeno manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</source>
+        <translation>%1 naredi glavo ožjo od %2 mm celo na deski %3 mm: dovoljeno od %4 do manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</source>
+        <translation>%1 mm ne ustreza nobeni deski tega recepta: deske od %2 do %3 mm potrebujejo nagib od %4 do %5°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm nima pomena pri stalnem nagibu: pustite kratko os prazno ali izberite ovalen sod</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm nima pomena pri okroglem sodu: pustite kratko os prazno ali izberite ovalen sod</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</source>
+        <translation>%1 mm ni dovoljeno: kratka os meri od %2 mm do dolge osi, %3 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 mm would make the head %2 mm wide: allowed %3 mm or more</source>
+        <translation>pri %1 mm bi bila glava široka %2 mm: dovoljeno %3 mm ali več</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</source>
+        <translation>%1° pri deskah tega recepta ne ustreza nobenemu sodu od %2 do %3 mm: dovoljeno od %4 do %5°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A drawn profile needs a drawing: import a DXF file</source>
+        <translation>Narisan profil potrebuje risbo: uvozite datoteko DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</source>
+        <translation>Okrogel ali ovalen sod potrebuje premer trebuha: dovoljeno od %1 do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>An oval barrel needs its short axis</source>
+        <translation>Ovalen sod potrebuje kratko os</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only a drawn side profile keeps a drawing</source>
+        <translation>Risbo ima le narisan stranski profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The drawing&apos;s file is not recorded: import the DXF file again</source>
+        <translation>Datoteka risbe ni zabeležena: ponovno uvozite datoteko DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name contains a control character</source>
+        <translation>Ime vsebuje krmilni znak</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name is empty: allowed 1 to %1 characters</source>
+        <translation>Ime je prazno: dovoljeno od 1 do %1 znakov</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name must have 1 to %1 characters, with no space at its start or end</source>
+        <translation>Ime mora imeti od 1 do %1 znakov, brez presledka na začetku ali koncu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The note has %1 characters: allowed at most %2</source>
+        <translation>Opomba ima %1 znakov: dovoljeno največ %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This side profile has no parameters</source>
+        <translation>Ta stranski profil nima parametrov</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This side profile has no such parameter</source>
+        <translation>Ta stranski profil nima takega parametra</translation>
+    </message>
+    <message>
+        <location filename="../../app/screens/texts.py" line="-49"/>
+        <source>This value is not allowed</source>
+        <translation>Ta vrednost ni dovoljena</translation>
+    </message>
+</context>
+<context>
     <name>SimPendantPanel</name>
     <message>
         <location filename="../../app/screens/widgets/sim_pendant.py" line="+168"/>
@@ -3509,7 +3647,7 @@ izmena</translation>
 <context>
     <name>States</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="-44"/>
+        <location filename="../../app/screens/texts.py" line="+5"/>
         <source>STARTING UP</source>
         <translation>ZAGANJANJE</translation>
     </message>
