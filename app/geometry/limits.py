@@ -123,7 +123,8 @@ def _check_width(value: object, limits: StaveLimits, errors: list[FieldError]) -
     if number is None:
         return None
     if not 0.0 < number <= limits.max_width_mm:
-        errors.append(out_of_range("width_mm", value, allowed))
+        error = out_of_range("width_mm", value, allowed)
+        errors.append(worded(error, RuleText.BOARD_WIDTH, value, limits.max_width_mm))
         return None
     return number
 
@@ -209,7 +210,14 @@ def _check_barrel_diameter(
         f"for width_mm = {format_value(width_mm)} the barrel belly diameter "
         f"W/sin(tilt) = {diameter:.1f} mm is outside {bounds}"
     )
-    errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+    error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+    d_low, d_high = limits.min_barrel_diameter_mm, limits.max_barrel_diameter_mm
+    if low <= high:
+        rule = RuleText.BOARD_BARREL
+        shown = (tilt_deg, width_mm, round(diameter, 1), d_low, d_high, round(low, 3))
+        errors.append(worded(error, rule, *shown, round(high, 3)))
+    else:
+        errors.append(worded(error, RuleText.BOARD_NO_TILT, width_mm, d_low, d_high))
 
 
 def width_ratio_minimum(limits: StaveLimits) -> float:
@@ -330,7 +338,9 @@ def validate_stave(
             note = (
                 f"head width = width_ratio * width_mm = {format_value(k)} * {format_value(width)}"
             )
-            errors.append(out_of_range("head_width_mm", head_width, allowed, note))
+            error = out_of_range("head_width_mm", head_width, allowed, note)
+            rule = RuleText.HEAD_NARROW
+            errors.append(worded(error, rule, round(head_width, 1), limits.min_head_width_mm))
             head_width = None
 
     if width is not None and tilt is not None:
@@ -345,5 +355,8 @@ def validate_stave(
                 f"the bevels of a {format_value(thickness)} mm thick stave would meet "
                 f"before the top face at the {head_width:.1f} mm wide heads"
             )
-            errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+            error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+            rule = RuleText.TOP_FACE
+            shown = (tilt_deg, thickness, round(head_width, 1), round(limit_deg, 3))
+            errors.append(worded(error, rule, *shown))
     return errors

@@ -46,6 +46,21 @@ class RuleText(Enum):
     BARREL_FITS_NO_BOARD = (
         "%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°"
     )
+    BOARD_WIDTH = "A board of %1 mm is outside the widths this machine takes: up to %2 mm"
+    HEAD_NARROW = "The head would be %1 mm wide: allowed %2 mm or more"
+    TOP_FACE = (
+        "At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide "
+        "heads: allowed below %4°"
+    )
+    BOARD_BARREL = (
+        "At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: "
+        "allowed %6 to %7°"
+    )
+    BOARD_NO_TILT = "No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves"
+    BOARD_BELOW_TARGET = "A board of %1 mm is narrower than the stave it should become, %2 mm"
+    BOARD_WIDER_THAN_BARREL = "A board of %1 mm does not fit a barrel of %2 mm"
+    BARREL_TILT = "The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°"
+    TRAVEL = "The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3"
     DRAWING_MISSING = "A drawn profile needs a drawing: import a DXF file"
     DRAWING_FILE = "The drawing's file is not recorded: import the DXF file again"
     PROFILE_NO_DRAWING = "Only a drawn side profile keeps a drawing"

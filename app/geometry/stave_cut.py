@@ -16,8 +16,16 @@ from enum import Enum
 
 from app.geometry.bevel import SideTilts, TiltRule
 from app.geometry.curved_profile import ProfileSpec, SideProfile
-from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.errors import (
+    FieldError,
+    GeometryError,
+    format_value,
+    not_a_number,
+    out_of_range,
+    worded,
+)
 from app.geometry.limits import StaveLimits, validate_stave
+from app.geometry.rule_texts import RuleText
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
 from app.geometry.travel import check_toolpath_travel
 
@@ -187,7 +195,7 @@ def side_tilt_error(error: FieldError, side: str) -> FieldError:
         return error
     words = f"tilt of side {side}"
     message = error.message.replace("tilt_deg", words, 1)
-    return FieldError(SIDE_TILT_FIELDS[side], error.value, error.allowed, message)
+    return replace(error, field=SIDE_TILT_FIELDS[side], message=message)
 
 
 def roughing_allowances_mm(depth_mm: float, max_depth_mm: float | None) -> tuple[float, ...]:
@@ -212,7 +220,9 @@ def _target_errors(board_mm: object, target_mm: float, limits: StaveLimits) -> l
         return [not_a_number("width_mm", board_mm, allowed)]
     if not board_mm >= target_mm:  # NaN too
         note = "the board is too narrow for the stave it should become"
-        return [out_of_range("width_mm", board_mm, allowed, note)]
+        error = out_of_range("width_mm", board_mm, allowed, note)
+        return [worded(error, RuleText.BOARD_BELOW_TARGET, board_mm, target_mm)]
     if board_mm > limits.max_width_mm:
-        return [out_of_range("width_mm", board_mm, allowed)]
+        error = out_of_range("width_mm", board_mm, allowed)
+        return [worded(error, RuleText.BOARD_WIDTH, board_mm, limits.max_width_mm)]
     return []

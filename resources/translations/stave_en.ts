@@ -3547,6 +3547,21 @@ shift</translation>
     </message>
     <message>
         <location line="+4" />
+        <source>A board of %1 mm does not fit a barrel of %2 mm</source>
+        <translation>A board of %1 mm does not fit a barrel of %2 mm</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A board of %1 mm is narrower than the stave it should become, %2 mm</source>
+        <translation>A board of %1 mm is narrower than the stave it should become, %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A board of %1 mm is outside the widths this machine takes: up to %2 mm</source>
+        <translation>A board of %1 mm is outside the widths this machine takes: up to %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>A drawn profile needs a drawing: import a DXF file</source>
         <translation>A drawn profile needs a drawing: import a DXF file</translation>
     </message>
@@ -3562,13 +3577,38 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</source>
+        <translation>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</source>
+        <translation>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</source>
+        <translation>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Only a drawn side profile keeps a drawing</source>
         <translation>Only a drawn side profile keeps a drawing</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</source>
+        <translation>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>The drawing's file is not recorded: import the DXF file again</source>
         <translation>The drawing's file is not recorded: import the DXF file again</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The head would be %1 mm wide: allowed %2 mm or more</source>
+        <translation>The head would be %1 mm wide: allowed %2 mm or more</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3592,6 +3632,11 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</source>
+        <translation>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>This side profile has no parameters</source>
         <translation>This side profile has no parameters</translation>
     </message>

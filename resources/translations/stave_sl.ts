@@ -3547,6 +3547,21 @@ izmena</translation>
     </message>
     <message>
         <location line="+4"/>
+        <source>A board of %1 mm does not fit a barrel of %2 mm</source>
+        <translation>Deska %1 mm ne ustreza sodu %2 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A board of %1 mm is narrower than the stave it should become, %2 mm</source>
+        <translation>Deska %1 mm je ožja od doge, ki naj bi iz nje nastala, %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A board of %1 mm is outside the widths this machine takes: up to %2 mm</source>
+        <translation>Deska %1 mm je zunaj širin, ki jih stroj sprejme: do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>A drawn profile needs a drawing: import a DXF file</source>
         <translation>Narisan profil potrebuje risbo: uvozite datoteko DXF</translation>
     </message>
@@ -3562,13 +3577,38 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</source>
+        <translation>Pri %1° deska %2 mm pripada sodu %3 mm, zunaj območja od %4 do %5 mm: dovoljeno od %6 do %7°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</source>
+        <translation>Pri %1° se poševnini %2 mm debele doge stakneta pred zgornjo ploskvijo na %3 mm širokih glavah: dovoljeno manj kot %4°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</source>
+        <translation>Deski %1 mm ne ustreza noben nagib: noben sod od %2 do %3 mm nima takih dog</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Only a drawn side profile keeps a drawing</source>
         <translation>Risbo ima le narisan stranski profil</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</source>
+        <translation>Sod da deski %1 mm nagib %2°: dovoljeno od %3 do %4°</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>The drawing&apos;s file is not recorded: import the DXF file again</source>
         <translation>Datoteka risbe ni zabeležena: ponovno uvozite datoteko DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The head would be %1 mm wide: allowed %2 mm or more</source>
+        <translation>Glava bi bila široka %1 mm: dovoljeno %2 mm ali več</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3592,6 +3632,11 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</source>
+        <translation>Pot orodja doseže %1 = %2 %3, zunaj hoda osi od %4 do %5 %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>This side profile has no parameters</source>
         <translation>Ta stranski profil nima parametrov</translation>
     </message>
