@@ -74,6 +74,7 @@ class RecipeChooser(Overlay):
     def show_matching(self, wanted: RecipeFilter) -> None:
         """Rebuild the buttons for the recipes the filter lets through."""
         for button in self.buttons:
+            button.hide()  # deleted later: until then it must not be drawn or tapped
             button.deleteLater()
         self.buttons = []
         while self.grid.count():

@@ -60,6 +60,8 @@ def test_screenshots_of_every_screen_in_a_realistic_state(
         "11-system-limits.png",
         "12-alarm-detail.png",
         "13-system-simulation.png",
+        "14-recipes-search.png",
+        "15-main-recipe-chooser.png",
     ]
     shown = {name.split("-", 1)[1].split("-")[0].removesuffix(".png") for name in names}
     assert set(SCREEN_KEYS) <= shown

@@ -139,6 +139,8 @@ def test_the_chooser_shows_every_number_whole_and_searches(qtbot, window, many, 
     tap(find_button(chooser, "filter_oval"))
     [oval] = [r for r in many if r.barrel_type is BarrelType.OVAL]
     assert [b.objectName() for b in chooser.buttons] == [f"chooseRecipe_{oval.id}"]
+    shown = [b for b in chooser.content.findChildren(ElidedButton) if b.isVisible()]
+    assert shown == chooser.buttons  # the buttons filtered out are not drawn any more
     tap(find_button(chooser, "filter_all"))
     search(window, tap, chooser, "no. 6")
     expected = [r for r in many if "no. 6" in r.name]
