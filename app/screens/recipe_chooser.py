@@ -20,8 +20,10 @@ from app.screens.widgets.kinetic import kinetic_scroll
 from app.screens.widgets.overlay import Overlay
 from app.screens.widgets.readouts import styled_label
 
-CHOOSER_WIDTH_PX = 640
-CHOOSER_ROWS_HEIGHT_PX = 330
+WIDTH_SHARE = 0.62
+HEIGHT_SHARE = 0.45
+"""The buttons' area as shares of the window: the same layout at 1024x768 and 1920x1080
+(a size in pixels left the scaled-up buttons too little room on a big panel)."""
 COLUMNS = 2
 
 
@@ -55,21 +57,28 @@ class RecipeChooser(Overlay):
         self.grid = QGridLayout(self.content)
         self.grid.setSpacing(8)
         self.grid.setAlignment(Qt.AlignmentFlag.AlignTop)
+        for column in range(COLUMNS):
+            self.grid.setColumnStretch(column, 1)  # equal columns, whatever the names
         self.buttons: list[QPushButton] = []
-        scroll = QScrollArea()
-        scroll.setWidget(self.content)
-        scroll.setWidgetResizable(True)
-        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setFixedSize(CHOOSER_WIDTH_PX, CHOOSER_ROWS_HEIGHT_PX)
-        kinetic_scroll(scroll)
+        self.buttons_area = QScrollArea()
+        self.buttons_area.setWidget(self.content)
+        self.buttons_area.setWidgetResizable(True)
+        self.buttons_area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        kinetic_scroll(self.buttons_area)
         self.cancel_button = touch_button("cancelButton", text=self.tr("Cancel"))
         self.cancel_button.clicked.connect(self.reject)
         self.panel_layout.addWidget(title)
         self.panel_layout.addWidget(self.filter_bar)
         self.panel_layout.addWidget(self.count_label)
-        self.panel_layout.addWidget(scroll)
+        self.panel_layout.addWidget(self.buttons_area)
         self.panel_layout.addWidget(self.cancel_button)
         self.show_matching(self.filter_bar.filter)
+
+    def open_on(self, host: QWidget) -> None:
+        self.buttons_area.setFixedSize(
+            round(host.width() * WIDTH_SHARE), round(host.height() * HEIGHT_SHARE)
+        )
+        super().open_on(host)
 
     def show_matching(self, wanted: RecipeFilter) -> None:
         """Rebuild the buttons for the recipes the filter lets through."""
