@@ -34,7 +34,7 @@ from PySide6.QtWidgets import (
 
 from app.data.dxf_profile import DxfProfileError, read_dxf_profile
 from app.data.errors import DataError, FieldValidationError
-from app.data.exchange import export_recipes, import_recipes
+from app.data.exchange import ImportReport, export_recipes, import_recipes
 from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, BarrelType, Recipe
 from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
@@ -1159,13 +1159,37 @@ class RecipesScreen(Screen):
             self._message(self.tr("Import failed"), str(exc))
             return
         self.reload()
-        lines = report.lines()
+        lines = self.import_lines(report)
         shown = lines[:12] + (
             [self.tr("… and %1 more lines").replace("%1", str(len(lines) - 12))]
             if len(lines) > 12
             else []
         )
         self._message(self.tr("Import"), "\n".join(shown))
+
+    def import_lines(self, report: ImportReport) -> list[str]:
+        """The import's report in the user's language: the counts, then each rejected row's
+        reasons in words (a reason about the file's own columns, an unknown or missing one,
+        names that column as the file spells it)."""
+        lines = [
+            self.tr("%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected")
+            .replace("%1", report.path.name)
+            .replace("%2", str(report.accepted))
+            .replace("%3", str(len(report.created)))
+            .replace("%4", str(len(report.updated)))
+            .replace("%5", str(len(report.unchanged)))
+            .replace("%6", str(len(report.rejected)))
+        ]
+        for row in report.rejected:
+            label = (
+                self.tr("row %1 (%2)").replace("%1", str(row.row)).replace("%2", row.name)
+                if row.name
+                else self.tr("row %1").replace("%1", str(row.row))
+            )
+            for error in row.errors:
+                reason = rule_message(error) if error.rule else error.message
+                lines.append(f"{label}: {reason}")
+        return lines
 
     def export_recipes(self, directory: Path | None = None) -> None:
         name = f"recipes-{datetime.now().strftime('%Y%m%d-%H%M')}.json"

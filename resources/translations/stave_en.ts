@@ -2863,17 +2863,17 @@ shift</translation>
 <context>
     <name>RecipeChooser</name>
     <message>
-        <location filename="../../app/screens/recipe_chooser.py" line="+50" />
+        <location filename="../../app/screens/recipe_chooser.py" line="+52" />
         <source>Choose a recipe</source>
         <translation>Choose a recipe</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+37" />
         <source>No recipe matches.</source>
         <translation>No recipe matches.</translation>
     </message>
@@ -3384,7 +3384,22 @@ shift</translation>
         <translation>… and %1 more lines</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
+        <source>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</source>
+        <translation>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>row %1 (%2)</source>
+        <translation>row %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>row %1</source>
+        <translation>row %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>Export recipes</source>
         <translation>Export recipes</translation>
     </message>

@@ -2863,17 +2863,17 @@ izmena</translation>
 <context>
     <name>RecipeChooser</name>
     <message>
-        <location filename="../../app/screens/recipe_chooser.py" line="+50"/>
+        <location filename="../../app/screens/recipe_chooser.py" line="+52"/>
         <source>Choose a recipe</source>
         <translation>Izberite recept</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Cancel</source>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>No recipe matches.</source>
         <translation>Noben recept ne ustreza.</translation>
     </message>
@@ -3384,7 +3384,22 @@ izmena</translation>
         <translation>… in še %1 vrstic</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</source>
+        <translation>%1: sprejetih %2 (%3 novih, %4 posodobljenih, %5 nespremenjenih), zavrnjenih %6</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>row %1 (%2)</source>
+        <translation>vrstica %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>row %1</source>
+        <translation>vrstica %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Export recipes</source>
         <translation>Izvoz receptov</translation>
     </message>

@@ -193,7 +193,9 @@ def test_export_then_import(qtbot, window, database, tap, tmp_path) -> None:
     report = window.overlay()
     assert isinstance(report, MessageOverlay)
     text = report.message_label.text()
-    assert "1 accepted" in text and "1 rejected" in text and "length_mm = 500" in text
+    assert "1 accepted" in text and "1 rejected" in text
+    assert "row 2 (Too short): 500 is outside the allowed range: 900 to 3500 mm" in text
+    assert "length_mm" not in text  # the reason in words, not the program's field
     assert database.get_recipe_by_name("Imported 1") is not None
     window.session.logout()
 
