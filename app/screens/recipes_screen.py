@@ -410,6 +410,11 @@ class RecipesScreen(Screen):
                 if low <= high:
                     # Rounded inwards: the keypad never offers a bound the rule refuses.
                     return (math.ceil(low * 100) / 100, math.floor(high * 100) / 100, "°")
+        if name == "target_width_mm" and self.draft is not None:
+            k = self.draft.width_ratio.value
+            if 0.0 < k < 1.0:  # the head of the stave to stock must keep its minimum width
+                low = max(limits.min_head_width_mm, limits.min_head_width_mm / k)
+                return (math.ceil(low * 10) / 10, limits.max_width_mm, "mm")
         d_low = limits.min_barrel_diameter_mm or 1.0
         d_high = limits.max_barrel_diameter_mm or 100_000.0
         ranges = {
@@ -870,7 +875,7 @@ class RecipesScreen(Screen):
             if widget is self.error_labels[name] and shown:
                 continue
             widget.setVisible(shown)
-        for row in ("barrel_diameter_mm", name):
+        for row in ("barrel_diameter_mm", name, "target_width_mm"):  # depend on the draft
             set_text(self.range_labels[row], self.range_text(row))
         self.field_buttons["tilt_deg"].setEnabled(not barrel)
         self._show_computed_tilt()

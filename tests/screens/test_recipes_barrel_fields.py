@@ -3,6 +3,8 @@ keypads and checked by the recipe's own rules; the preview shows both sides' til
 
 from __future__ import annotations
 
+import pytest
+
 from app.data.recipe import BarrelType
 from app.geometry.limits import width_ratio_minimum
 from app.geometry.ratio import Ratio
@@ -101,3 +103,10 @@ def test_the_hints_state_the_bounds_the_validation_applies(qtbot, window, tap) -
     )
     assert screen._check("tilt_deg", low) == "" and screen._check("tilt_deg", high) == ""
     assert screen._check("tilt_deg", low - 0.02) and screen._check("tilt_deg", high + 0.02)
+    # A belly width to cut keeps the head at its minimum: 60 mm / k.
+    low, high, _ = screen.field_range("target_width_mm")
+    k = screen.draft.width_ratio.value
+    assert low == pytest.approx(limits.min_head_width_mm / k, abs=0.1) and low > 60.0
+    assert screen.range_labels["target_width_mm"].text().startswith(f"{format_number(low)} … ")
+    assert screen._check("target_width_mm", low) == ""
+    assert screen._check("target_width_mm", low - 0.2)
