@@ -810,8 +810,8 @@ class RecipesScreen(Screen):
             "name": draft.name,
             "length_mm": f"{format_number(draft.length_mm)} mm",
             "thickness_mm": f"{format_number(draft.thickness_mm)} mm",
-            "length_ratio": f"{draft.length_ratio} = {draft.length_ratio.value:.3f}",
-            "width_ratio": f"{draft.width_ratio} = {draft.width_ratio.value:.3f}",
+            "length_ratio": f"{draft.length_ratio} = {draft.length_ratio.value:.2f}",
+            "width_ratio": f"{draft.width_ratio} = {draft.width_ratio.value:.2f}",
             "profile_kind": self.kind_title(draft.profile.kind),
             "exponent": format_optional(dict(draft.profile.params).get("exponent"), 3, ""),
             "semi_axis_ratio": format_optional(

@@ -152,3 +152,14 @@ def test_the_chooser_shows_every_number_whole_and_searches(qtbot, window, many, 
     tap(chooser.buttons[9])
     wait_for(qtbot, window, lambda s: s.recipe_id == many[9].id)
     assert window.overlay() is None
+
+
+def test_the_ratios_are_shown_whole_at_1024x768(qtbot, window, tap) -> None:
+    """A field that does not fit ends in an ellipsis; the ratios, fraction and decimal, fit."""
+    screen = open_recipes(window, tap)
+    for recipe in screen.recipes:
+        screen.select_recipe(recipe.id)
+        for name in ("length_ratio", "width_ratio", "length_mm", "thickness_mm"):
+            button = find_button(window, f"field_{name}")
+            assert isinstance(button, ElidedButton)
+            assert button.shown_text() == button.text(), (recipe.name, button.text())
