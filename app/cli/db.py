@@ -31,7 +31,7 @@ from app.data.exchange import (
 )
 from app.data.parameters import PARAMETERS
 from app.data.paths import default_database_path
-from app.data.recipe import TiltMode
+from app.data.recipe import BarrelType
 from app.geometry.errors import format_value
 
 LIST_CHOICES = ("recipes", "parameters", "users", "barrels")
@@ -303,11 +303,15 @@ def _list(args: argparse.Namespace) -> int:
         if args.what == "recipes":
             print("id  name                                      L mm   H mm  lambda  k      tilt")
             for r in db.list_recipes():
-                tilt = (
-                    f"{format_value(r.tilt_deg)} deg"
-                    if r.tilt_mode is TiltMode.FIXED
-                    else f"from barrel D {format_value(r.barrel_diameter_mm)} mm"
-                )
+                if r.barrel_type is BarrelType.FIXED_TILT:
+                    tilt = f"{format_value(r.tilt_deg)} deg"
+                elif r.barrel_type is BarrelType.ROUND:
+                    tilt = f"round barrel D {format_value(r.barrel_diameter_mm)} mm"
+                else:
+                    tilt = (
+                        f"oval barrel {format_value(r.barrel_diameter_mm)} x "
+                        f"{format_value(r.barrel_minor_diameter_mm)} mm"
+                    )
                 print(
                     f"{r.id:<3} {r.name:<40} {format_value(r.length_mm):>6} "
                     f"{format_value(r.thickness_mm):>5}  {r.length_ratio!s:<6}  "

@@ -54,7 +54,7 @@ from app.geometry.barrel_section import BarrelSection, PlacedBarrelTilt, validat
 from app.geometry.bevel import FixedSideTilts, FixedTilt, SideTilts, TiltRule
 from app.geometry.biarc import FIT_TOLERANCE_MM
 from app.geometry.curved_profile import CurvedProfile, SideProfile
-from app.geometry.errors import GeometryError, out_of_range
+from app.geometry.errors import FieldError, GeometryError, not_a_number, out_of_range
 from app.geometry.limits import StaveLimits, validate_stave
 from app.geometry.ratio import Ratio
 from app.geometry.stave_cut import StaveSpec, cut_stave
@@ -284,8 +284,11 @@ def _tilt_rule(args: argparse.Namespace, tilt_deg: float) -> TiltRule:
         raise CliInputError("--barrel-start-deg is for an oval barrel: give --barrel-axes-mm")
     if args.tilt_b is not None:
         tilt_b = _number_or_text(args.tilt_b)
-        if not isinstance(tilt_b, float) or not 0.0 <= tilt_b < 90.0:
-            raise GeometryError([out_of_range("tilt_b_deg", tilt_b, "0 <= tilt < 90 deg")])
+        allowed = "0 <= tilt of side B < 90 deg"
+        if not isinstance(tilt_b, float):
+            raise GeometryError([not_a_number("tilt_b_deg", tilt_b, allowed)])
+        if not 0.0 <= tilt_b < 90.0:
+            raise GeometryError([out_of_range("tilt_b_deg", tilt_b, allowed)])
         return FixedSideTilts(SideTilts(tilt_deg, tilt_b))
     if not barrel:
         return FixedTilt(tilt_deg)
@@ -311,6 +314,20 @@ def _tilt_rule(args: argparse.Namespace, tilt_deg: float) -> TiltRule:
         raise GeometryError(errors)
     assert isinstance(a, float) and isinstance(b, float) and isinstance(start, float)
     return PlacedBarrelTilt(BarrelSection(a, b), math.radians(start))
+
+
+_SIDE_OPTIONS = {"tilt_a_deg": ("--tilt", "A"), "tilt_b_deg": ("--tilt-b", "B")}
+"""The options that give each side's bevel when the two sides differ."""
+
+
+def _option_message(error: FieldError) -> str:
+    """One refusal as the command line says it: a side's bevel is named by its option and
+    in words ("--tilt-b: tilt of side B = 30 is out of range ...")."""
+    option = _SIDE_OPTIONS.get(error.field)
+    if option is None:
+        return error.message
+    flag, side = option
+    return f"{flag}: " + error.message.replace(error.field, f"tilt of side {side}", 1)
 
 
 def _pair(point: tuple[float, float]) -> list[float]:
@@ -435,7 +452,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         profile, toolpath, ratios = _solve(args)
     except GeometryError as exc:
-        print("stave solve: " + "; ".join(e.message for e in exc.errors), file=sys.stderr)
+        print("stave solve: " + "; ".join(_option_message(e) for e in exc.errors), file=sys.stderr)
         return EXIT_INVALID_INPUT
     except CliInputError as exc:
         print(f"stave solve: {exc}", file=sys.stderr)

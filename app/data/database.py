@@ -83,7 +83,7 @@ from app.data.pin_guard import (
     refusal_text,
     wait_s,
 )
-from app.data.recipe import Recipe, TiltMode, recipe_to_mapping
+from app.data.recipe import BarrelType, Recipe, recipe_to_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.recipe_profile import parse_recipe_profile
 from app.data.records import (
@@ -148,7 +148,7 @@ objects, which stay flat)."""
 _RECIPE_COLUMNS = (
     "id, name, length_mm, thickness_mm, length_ratio_num, length_ratio_den, width_ratio_num, "
     "width_ratio_den, tilt_mode, tilt_deg, barrel_diameter_mm, barrel_perimeter_mm, note, "
-    "profile_kind, profile_json, barrel_minor_diameter_mm, target_width_mm"
+    "profile_kind, profile_json, barrel_minor_diameter_mm, target_width_mm, barrel_type"
 )
 _PRODUCTION_COLUMNS = (
     "id, time, recipe_id, recipe_name, width_mm, d_mm, r_mm, tilt_deg, cycle_time_s, result, "
@@ -165,7 +165,7 @@ def _recipe_from_row(row: sqlite3.Row) -> Recipe:
         thickness_mm=float(row["thickness_mm"]),
         length_ratio=Ratio(int(row["length_ratio_num"]), int(row["length_ratio_den"])),
         width_ratio=Ratio(int(row["width_ratio_num"]), int(row["width_ratio_den"])),
-        tilt_mode=TiltMode(row["tilt_mode"]),
+        barrel_type=BarrelType(row["barrel_type"]),
         tilt_deg=float(row["tilt_deg"]),
         barrel_diameter_mm=_opt_float(row["barrel_diameter_mm"]),
         barrel_perimeter_mm=_opt_float(row["barrel_perimeter_mm"]),
@@ -758,9 +758,9 @@ class Database:
             "INSERT INTO recipes (name, length_mm, thickness_mm, length_ratio_num, "
             "length_ratio_den, width_ratio_num, width_ratio_den, tilt_mode, tilt_deg, "
             "barrel_diameter_mm, barrel_perimeter_mm, note, profile_kind, profile_json, "
-            "barrel_minor_diameter_mm, target_width_mm, "
+            "barrel_minor_diameter_mm, target_width_mm, barrel_type, "
             "created_at, created_by, updated_at, updated_by) "
-            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
             (
                 *self._recipe_values(recipe),
                 now,
@@ -789,7 +789,7 @@ class Database:
             "length_ratio_den = ?, width_ratio_num = ?, width_ratio_den = ?, tilt_mode = ?, "
             "tilt_deg = ?, barrel_diameter_mm = ?, barrel_perimeter_mm = ?, note = ?, "
             "profile_kind = ?, profile_json = ?, barrel_minor_diameter_mm = ?, "
-            "target_width_mm = ?, updated_at = ?, updated_by = ? WHERE id = ?",
+            "target_width_mm = ?, barrel_type = ?, updated_at = ?, updated_by = ? WHERE id = ?",
             (*self._recipe_values(recipe), now, user_name, recipe.id),
         )
         self._log_recipe(conn, now, recipe.id, recipe.name, "update", user_name, before, recipe)
@@ -814,6 +814,7 @@ class Database:
             recipe.profile.data_json(),
             _opt_float(recipe.barrel_minor_diameter_mm),
             _opt_float(recipe.target_width_mm),
+            recipe.barrel_type.value,
         )
 
     @staticmethod

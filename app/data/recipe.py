@@ -2,17 +2,21 @@
 
 A recipe fixes the stave's length and thickness, the two ratios of the side profile (length
 ratio lambda = L1 : L and width ratio k = W1 : W, kept as the fractions the cooper typed, their
-decimals derived), and how the bevel is chosen:
+decimals derived), and its barrel type, the cooper's explicit choice of how the bevel is chosen:
 
-* ``TiltMode.FIXED``: every board is bevelled at ``tilt_deg``.
-* ``TiltMode.BARREL``: the bevel is computed for each board from its measured width and the
-  barrel's belly section, so narrow and wide boards of one barrel all close. The barrel is
-  round (``barrel_diameter_mm``: both sides asin(W/D), ``app.geometry.barrel``) or oval
-  (``barrel_diameter_mm`` the long belly axis, ``barrel_minor_diameter_mm`` the short one): on
-  an oval the two sides of a stave get different bevels, which depend on where the stave sits
-  in the barrel (``app.geometry.barrel_section``). ``tilt_deg`` is then the nominal tilt the
-  recipe screen shows (for a typical board); it is validated like a fixed tilt but the cut uses
-  the computed value.
+* ``BarrelType.FIXED_TILT``: every board is bevelled at ``tilt_deg``.
+* ``BarrelType.ROUND`` and ``BarrelType.OVAL``: the bevel is computed for each board from its
+  measured width and the barrel's belly section, so narrow and wide boards of one barrel all
+  close. Round: ``barrel_diameter_mm`` (both sides asin(W/D), ``app.geometry.barrel``). Oval:
+  ``barrel_diameter_mm`` the long belly axis, ``barrel_minor_diameter_mm`` the short one; the
+  two sides of a stave get different bevels, which depend on where the stave sits in the
+  barrel (``app.geometry.barrel_section``). ``tilt_deg`` is then the nominal tilt (for a
+  typical board); it is validated like a fixed tilt but the cut uses the computed value.
+
+The type is stored, not guessed from which diameters are filled in: a round barrel with a
+stray short axis is refused, not silently made oval. ``TiltMode`` (fixed or from the barrel)
+is derived from it; files written before the type existed give ``tilt_mode`` instead, and a
+``barrel`` one is read as oval when it has a short axis (what those files meant).
 
 Validation is the geometry's (``validate_recipe_fields``: length, thickness, ratios, tilt and
 the machine's limits) plus what only a stored recipe has: a name, the tilt mode, the barrel's
@@ -48,9 +52,11 @@ from app.geometry.errors import (
     format_value,
     not_a_number,
     out_of_range,
+    worded,
 )
 from app.geometry.limits import DEFAULT_LIMITS, StaveLimits, validate_recipe_fields
 from app.geometry.ratio import Ratio
+from app.geometry.rule_texts import RuleText
 from app.geometry.stave_cut import StaveSpec
 
 NAME_MAX_CHARS = 40
@@ -58,18 +64,25 @@ NOTE_MAX_CHARS = 500
 
 
 class TiltMode(Enum):
-    """How the bevel of a board is chosen."""
+    """How the bevel of a board is chosen (derived from the recipe's barrel type)."""
 
     FIXED = "fixed"  # the recipe's tilt_deg for every board
-    BARREL = "barrel"  # computed per board from the barrel's belly diameter and the width
+    BARREL = "barrel"  # computed per board from the barrel's belly section and the width
 
 
 class BarrelType(Enum):
-    """What the recipe's bevel follows (derived from the tilt mode and the diameters)."""
+    """What the recipe's bevel follows: the cooper's choice, stored with the recipe."""
 
     FIXED_TILT = "fixed"
     ROUND = "round"
     OVAL = "oval"
+
+    @property
+    def tilt_mode(self) -> TiltMode:
+        return TiltMode.FIXED if self is BarrelType.FIXED_TILT else TiltMode.BARREL
+
+
+BARREL_TYPE_ALLOWED = "fixed, round or oval"
 
 
 @dataclass(frozen=True)
@@ -82,7 +95,7 @@ class Recipe:
     thickness_mm: float
     length_ratio: Ratio
     width_ratio: Ratio
-    tilt_mode: TiltMode
+    barrel_type: BarrelType
     tilt_deg: float
     barrel_diameter_mm: float | None
     barrel_perimeter_mm: float | None
@@ -93,18 +106,18 @@ class Recipe:
     """Cut every board to this belly width (staves made to stock; None: the board's width)."""
 
     @property
-    def barrel_type(self) -> BarrelType:
-        """Fixed tilt, round barrel or oval barrel: what the recipe screen offers."""
-        if self.tilt_mode is not TiltMode.BARREL:
-            return BarrelType.FIXED_TILT
-        return BarrelType.ROUND if self.barrel_minor_diameter_mm is None else BarrelType.OVAL
+    def tilt_mode(self) -> TiltMode:
+        """Fixed, or computed per board from the barrel (round or oval)."""
+        if not isinstance(self.barrel_type, BarrelType):  # refused by validate()
+            return TiltMode.FIXED
+        return self.barrel_type.tilt_mode
 
     @property
     def barrel_section(self) -> BarrelSection | None:
         """The belly cross-section the staves are placed on (None: fixed tilt, or no diameter)."""
         if self.tilt_mode is not TiltMode.BARREL or self.barrel_diameter_mm is None:
             return None
-        minor = self.barrel_minor_diameter_mm
+        minor = self.barrel_minor_diameter_mm if self.barrel_type is BarrelType.OVAL else None
         major = self.barrel_diameter_mm
         return BarrelSection(major / 2.0, (major if minor is None else minor) / 2.0)
 
@@ -126,9 +139,8 @@ class Recipe:
     def tilt_rule(self) -> TiltRule:
         """How this recipe bevels a board of a measured width (``app.geometry.barrel`` has the
         barrel's mathematics)."""
-        if self.barrel_type is BarrelType.OVAL:
-            section = self.barrel_section
-            assert section is not None  # an oval has both diameters
+        section = self.barrel_section
+        if self.barrel_type is BarrelType.OVAL and section is not None:
             return PlacedBarrelTilt(section)  # the first stave's place; a barrel set moves it
         if self.tilt_mode is TiltMode.BARREL:
             return RoundBarrelTilt(self.barrel_diameter_mm)
@@ -153,18 +165,23 @@ def _check_name(name: object, errors: list[FieldError]) -> None:
     if not isinstance(name, str):
         errors.append(not_a_text("name", name, allowed))
     elif not name.strip():
-        errors.append(FieldError("name", name, allowed, f"name is empty: allowed {allowed}"))
+        error = FieldError("name", name, allowed, f"name is empty: allowed {allowed}")
+        errors.append(worded(error, RuleText.NAME_EMPTY, NAME_MAX_CHARS))
     elif name != name.strip() or len(name) > NAME_MAX_CHARS:
-        errors.append(out_of_range("name", name, allowed))
+        errors.append(
+            worded(out_of_range("name", name, allowed), RuleText.NAME_LENGTH, NAME_MAX_CHARS)
+        )
     elif any(not ch.isprintable() for ch in name):
         message = f"name = {name!r} contains a control character: allowed {allowed}"
-        errors.append(FieldError("name", name, allowed, message))
+        errors.append(worded(FieldError("name", name, allowed, message), RuleText.NAME_CONTROL))
 
 
 def not_a_text(field: str, value: object, allowed: str) -> FieldError:
     """The error for a value that should have been text."""
     message = f"{field} = {format_value(value)} is not text: allowed {allowed}"
-    return FieldError(field, value, allowed, message)
+    return worded(
+        FieldError(field, value, allowed, message), RuleText.NOT_TEXT, format_value(value)
+    )
 
 
 def _diameter_bounds(limits: StaveLimits) -> tuple[float, float]:
@@ -179,15 +196,18 @@ def _check_optional_positive(
     if value is None:
         return None
     allowed = f"empty, or {format_value(low)} <= {field} <= {format_value(high)} mm"
+    shown = format_value(value)
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), RuleText.NOT_A_NUMBER, shown))
         return None
     number = float(value)
     if not math.isfinite(number):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), RuleText.NOT_A_NUMBER, shown))
         return None
     if not (low <= number <= high and number > 0):
-        errors.append(out_of_range(field, value, allowed))
+        error = out_of_range(field, value, allowed)
+        rule = RuleText.OPTIONAL_BETWEEN
+        errors.append(worded(error, rule, value, round(low, 1), round(high, 1), "mm"))
         return None
     return number
 
@@ -226,13 +246,7 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
     )
     if diameter is not None and minor is not None:
         _check_oval(diameter, minor, errors)
-    if minor is not None and recipe.tilt_mode is TiltMode.FIXED:
-        allowed = "empty with tilt_mode 'fixed'; an oval barrel needs tilt_mode 'barrel'"
-        message = (
-            f"barrel_minor_diameter_mm = {format_value(minor)} has no use with a fixed tilt: "
-            f"allowed {allowed}"
-        )
-        errors.append(FieldError("barrel_minor_diameter_mm", minor, allowed, message))
+    _check_short_axis(recipe, errors)
     target = _check_optional_positive(
         "target_width_mm",
         recipe.target_width_mm,
@@ -247,24 +261,23 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
                 f"target_width_mm >= {format_value(limits.min_head_width_mm)} / width ratio "
                 f"= {limits.min_head_width_mm / recipe.width_ratio.value:.1f} mm"
             )
-            errors.append(
-                out_of_range(
-                    "target_width_mm", target, allowed, f"the head would be {head:.1f} mm wide"
-                )
+            error = out_of_range(
+                "target_width_mm", target, allowed, f"the head would be {head:.1f} mm wide"
             )
+            least = round(limits.min_head_width_mm / recipe.width_ratio.value, 1)
+            errors.append(worded(error, RuleText.TARGET_HEAD, target, round(head, 1), least))
 
-    if not isinstance(recipe.tilt_mode, TiltMode):
-        allowed = " or ".join(mode.value for mode in TiltMode)
-        message = f"tilt_mode = {format_value(recipe.tilt_mode)} is unknown: allowed {allowed}"
-        errors.append(FieldError("tilt_mode", recipe.tilt_mode, allowed, message))
+    if not isinstance(recipe.barrel_type, BarrelType):
+        errors.append(unknown_barrel_type(recipe.barrel_type))
     elif recipe.tilt_mode is TiltMode.BARREL:
         if recipe.barrel_diameter_mm is None:
             allowed = f"{format_value(d_low)} <= barrel_diameter_mm <= {format_value(d_high)} mm"
             message = (
-                f"barrel_diameter_mm is missing: tilt_mode 'barrel' computes the tilt from it "
-                f"(allowed {allowed})"
+                f"barrel_diameter_mm is missing: a {recipe.barrel_type.value} barrel computes "
+                f"the tilt from it (allowed {allowed})"
             )
-            errors.append(FieldError("barrel_diameter_mm", None, allowed, message))
+            error = FieldError("barrel_diameter_mm", None, allowed, message)
+            errors.append(worded(error, RuleText.DIAMETER_MISSING, d_low, d_high))
         elif diameter is not None and isinstance(recipe.width_ratio, Ratio):
             k = recipe.width_ratio.value
             if 0 < k <= 1:
@@ -275,13 +288,46 @@ def validate_recipe(recipe: Recipe, limits: StaveLimits | None = None) -> list[F
     elif len(recipe.note) > NOTE_MAX_CHARS:
         allowed = f"at most {NOTE_MAX_CHARS} characters"
         message = f"note is {len(recipe.note)} characters long: allowed {allowed}"
-        errors.append(FieldError("note", recipe.note, allowed, message))
+        error = FieldError("note", recipe.note, allowed, message)
+        errors.append(worded(error, RuleText.NOTE_LONG, len(recipe.note), NOTE_MAX_CHARS))
     if isinstance(recipe.profile, RecipeProfile):
         errors.extend(recipe.profile.validate())
     else:
         message = f"{DATA_FIELD} = {format_value(recipe.profile)} is not a side profile"
         errors.append(FieldError(DATA_FIELD, recipe.profile, "a side profile", message))
     return errors
+
+
+def unknown_barrel_type(value: object) -> FieldError:
+    """The refusal of a barrel type that is none of the three."""
+    message = f"barrel_type = {format_value(value)} is unknown: allowed {BARREL_TYPE_ALLOWED}"
+    error = FieldError("barrel_type", value, BARREL_TYPE_ALLOWED, message)
+    return worded(error, RuleText.BARREL_TYPE, format_value(value))
+
+
+def _check_short_axis(recipe: Recipe, errors: list[FieldError]) -> None:
+    """The short belly axis belongs to an oval barrel, and an oval barrel needs it."""
+    minor = recipe.barrel_minor_diameter_mm
+    kind = recipe.barrel_type
+    if kind is BarrelType.OVAL and minor is None:
+        allowed = "the oval's short belly axis in mm, at most barrel_diameter_mm"
+        message = f"barrel_minor_diameter_mm is missing: an oval barrel needs it ({allowed})"
+        error = FieldError("barrel_minor_diameter_mm", None, allowed, message)
+        errors.append(worded(error, RuleText.SHORT_AXIS_MISSING))
+    elif kind in (BarrelType.FIXED_TILT, BarrelType.ROUND) and minor is not None:
+        allowed = "empty unless barrel_type is 'oval'"
+        use = "a fixed tilt" if kind is BarrelType.FIXED_TILT else "a round barrel"
+        message = (
+            f"barrel_minor_diameter_mm = {format_value(minor)} has no use with {use}: "
+            f"allowed {allowed}"
+        )
+        rule = (
+            RuleText.SHORT_AXIS_FIXED
+            if kind is BarrelType.FIXED_TILT
+            else RuleText.SHORT_AXIS_ROUND
+        )
+        error = FieldError("barrel_minor_diameter_mm", minor, allowed, message)
+        errors.append(worded(error, rule, minor))
 
 
 def _check_oval(major_mm: float, minor_mm: float, errors: list[FieldError]) -> None:
@@ -293,7 +339,9 @@ def _check_oval(major_mm: float, minor_mm: float, errors: list[FieldError]) -> N
             f"{format_value(major_mm)} mm"
         )
         note = "the oval's short belly axis; the long one is barrel_diameter_mm"
-        errors.append(out_of_range("barrel_minor_diameter_mm", minor_mm, allowed, note))
+        error = out_of_range("barrel_minor_diameter_mm", minor_mm, allowed, note)
+        rule = RuleText.SHORT_AXIS_BETWEEN
+        errors.append(worded(error, rule, minor_mm, round(low, 1), major_mm))
 
 
 def _ratio_value(ratio: object) -> object:
@@ -311,7 +359,7 @@ REQUIRED_KEYS: tuple[str, ...] = (
     "tilt_deg",
 )
 OPTIONAL_KEYS: tuple[str, ...] = (
-    "tilt_mode",
+    "barrel_type",
     "barrel_diameter_mm",
     "barrel_minor_diameter_mm",
     "barrel_perimeter_mm",
@@ -320,9 +368,11 @@ OPTIONAL_KEYS: tuple[str, ...] = (
     KIND_FIELD,
     DATA_FIELD,
 )
-ROW_KEYS: tuple[str, ...] = (*REQUIRED_KEYS[:5], "tilt_mode", "tilt_deg", *OPTIONAL_KEYS[1:])
+ROW_KEYS: tuple[str, ...] = (*REQUIRED_KEYS[:5], "barrel_type", "tilt_deg", *OPTIONAL_KEYS[1:])
 # An exported database id means nothing in another database: accepted and ignored.
 IGNORED_KEYS: frozenset[str] = frozenset({"id"})
+LEGACY_KEYS: tuple[str, ...] = ("tilt_mode",)
+"""Read from files written before the barrel type existed (``_read_barrel_type``)."""
 
 _NUMBER_ALLOWED = "a number"
 _RATIO_ALLOWED = "a fraction like '1/4' or a decimal like '0.25'"
@@ -380,17 +430,18 @@ def _missing(key: str, allowed: str) -> FieldError:
 def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
     """Read one recipe row (JSON object or CSV line as a dict); the result has ``id`` None.
 
-    Numbers may be numbers or text ("950", "27.5"); ratios "N/D" or a decimal; ``tilt_mode``
-    "fixed" (default) or "barrel"; empty optional fields are None. Raises RecipeFormatError
-    naming every missing, unknown or unreadable key. The values are only read here, not checked
-    against the machine's limits: that is :meth:`Recipe.validate`.
+    Numbers may be numbers or text ("950", "27.5"); ratios "N/D" or a decimal; ``barrel_type``
+    "fixed" (default), "round" or "oval" (older files: ``tilt_mode``); empty optional fields
+    are None. Raises RecipeFormatError naming every missing, unknown or unreadable key. The
+    values are only read here, not checked against the machine's limits: that is
+    :meth:`Recipe.validate`.
     """
     if not isinstance(row, Mapping):
         allowed = f"an object with the keys {', '.join(ROW_KEYS)}"
         message = f"recipe row = {format_value(row)} is not an object: expected {allowed}"
         raise RecipeFormatError([FieldError("row", row, allowed, message)])
     errors: list[FieldError] = []
-    known = set(ROW_KEYS) | IGNORED_KEYS
+    known = set(ROW_KEYS) | IGNORED_KEYS | set(LEGACY_KEYS)
     for key in row:
         if key not in known:
             allowed = ", ".join(ROW_KEYS)
@@ -432,17 +483,7 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
         else:
             ratios[key] = _read_ratio(key, value, errors)
 
-    tilt_mode = TiltMode.FIXED
-    raw_mode = row.get("tilt_mode")
-    if not _is_blank(raw_mode):
-        allowed = " or ".join(repr(mode.value) for mode in TiltMode)
-        try:
-            if not isinstance(raw_mode, str):
-                raise ValueError
-            tilt_mode = TiltMode(raw_mode.strip().lower())
-        except ValueError:
-            message = f"tilt_mode = {format_value(raw_mode)} is unknown: allowed {allowed}"
-            errors.append(FieldError("tilt_mode", raw_mode, allowed, message))
+    barrel_type = _read_barrel_type(row, numbers_read["barrel_minor_diameter_mm"], errors)
 
     note = ""
     raw_note = row.get("note")
@@ -472,7 +513,7 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
         thickness_mm=thickness_mm,
         length_ratio=length_ratio,
         width_ratio=width_ratio,
-        tilt_mode=tilt_mode,
+        barrel_type=barrel_type,
         tilt_deg=tilt_deg,
         barrel_diameter_mm=numbers_read["barrel_diameter_mm"],
         barrel_perimeter_mm=numbers_read["barrel_perimeter_mm"],
@@ -483,6 +524,46 @@ def recipe_from_mapping(row: Mapping[str, object]) -> Recipe:
     )
 
 
+def _read_barrel_type(
+    row: Mapping[str, object], minor_mm: float | None, errors: list[FieldError]
+) -> BarrelType:
+    """``barrel_type`` (fixed, round or oval; default fixed), or an older file's ``tilt_mode``:
+    "barrel" was a round barrel, or an oval one when the short axis was filled in."""
+    raw_type, raw_mode = row.get("barrel_type"), row.get("tilt_mode")
+    barrel_type = BarrelType.FIXED_TILT
+    if not _is_blank(raw_type):
+        try:
+            if not isinstance(raw_type, str):
+                raise ValueError
+            barrel_type = BarrelType(raw_type.strip().lower())
+        except ValueError:
+            errors.append(unknown_barrel_type(raw_type))
+            return barrel_type
+    if _is_blank(raw_mode):
+        return barrel_type
+    allowed = " or ".join(repr(mode.value) for mode in TiltMode)
+    try:
+        if not isinstance(raw_mode, str):
+            raise ValueError
+        tilt_mode = TiltMode(raw_mode.strip().lower())
+    except ValueError:
+        message = f"tilt_mode = {format_value(raw_mode)} is unknown: allowed {allowed}"
+        errors.append(FieldError("tilt_mode", raw_mode, allowed, message))
+        return barrel_type
+    if _is_blank(raw_type):
+        if tilt_mode is TiltMode.FIXED:
+            return BarrelType.FIXED_TILT
+        return BarrelType.ROUND if minor_mm is None else BarrelType.OVAL
+    if barrel_type.tilt_mode is not tilt_mode:
+        message = (
+            f"tilt_mode = {format_value(raw_mode)} contradicts barrel_type = "
+            f"{format_value(raw_type)}: allowed tilt_mode {barrel_type.tilt_mode.value!r} "
+            "or no tilt_mode"
+        )
+        errors.append(FieldError("tilt_mode", raw_mode, barrel_type.tilt_mode.value, message))
+    return barrel_type
+
+
 def recipe_to_mapping(recipe: Recipe) -> dict[str, object]:
     """The row format of ``recipe`` (no id: it belongs to one database), keys in ROW_KEYS order."""
     return {
@@ -491,7 +572,7 @@ def recipe_to_mapping(recipe: Recipe) -> dict[str, object]:
         "thickness_mm": recipe.thickness_mm,
         "length_ratio": str(recipe.length_ratio),
         "width_ratio": str(recipe.width_ratio),
-        "tilt_mode": recipe.tilt_mode.value,
+        "barrel_type": recipe.barrel_type.value,
         "tilt_deg": recipe.tilt_deg,
         "barrel_diameter_mm": recipe.barrel_diameter_mm,
         "barrel_minor_diameter_mm": recipe.barrel_minor_diameter_mm,

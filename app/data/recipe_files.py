@@ -28,7 +28,14 @@ from pathlib import Path
 from app.data.csv_cells import from_csv_text, to_csv_text
 from app.data.errors import DataError, RecipeFormatError
 from app.data.files import atomic_write_text
-from app.data.recipe import IGNORED_KEYS, REQUIRED_KEYS, ROW_KEYS, Recipe, recipe_from_mapping
+from app.data.recipe import (
+    IGNORED_KEYS,
+    LEGACY_KEYS,
+    REQUIRED_KEYS,
+    ROW_KEYS,
+    Recipe,
+    recipe_from_mapping,
+)
 from app.data.recipe import recipe_to_mapping as _to_mapping
 from app.geometry.errors import FieldError
 
@@ -39,7 +46,7 @@ MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest recipe file read (a 24,000-recipe file is about 2 MB)."""
 
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+\s*$")
-_TEXT_KEYS = frozenset({"name", "note", "tilt_mode", "profile_kind", "profile"})
+_TEXT_KEYS = frozenset({"name", "note", "barrel_type", "tilt_mode", "profile_kind", "profile"})
 
 
 class RecipeFileError(DataError, ValueError):
@@ -142,7 +149,7 @@ def _csv_rows(path: Path, text: str) -> list[RecipeRow]:
     except csv.Error as exc:
         raise RecipeFileError(f"{path}: not valid CSV on line 1 ({exc})") from None
     keys = [cell.strip().lower() for cell in header]
-    allowed = set(ROW_KEYS) | IGNORED_KEYS
+    allowed = set(ROW_KEYS) | IGNORED_KEYS | set(LEGACY_KEYS)
     for key in keys:
         if key not in allowed:
             raise RecipeFileError(

@@ -20,8 +20,9 @@ from dataclasses import dataclass
 
 from app.geometry.curved_profile import ProfileSpec
 from app.geometry.drawn_profile import DrawnShape, shape_from_dict
-from app.geometry.errors import FieldError, GeometryError, format_value
+from app.geometry.errors import FieldError, GeometryError, format_value, worded
 from app.geometry.profile_kinds import ProfileKind, validate_family_parameters
+from app.geometry.rule_texts import RuleText
 
 _SHA256 = re.compile(r"^[0-9a-f]{64}$")
 KIND_FIELD = "profile_kind"
@@ -51,24 +52,31 @@ class RecipeProfile:
         if self.params:
             names = ", ".join(name for name, _ in self.params)
             message = f"{DATA_FIELD}: the {self.kind.value} profile has no parameters ({names})"
-            errors.append(FieldError(DATA_FIELD, names, "no parameters", message))
+            error = FieldError(DATA_FIELD, names, "no parameters", message)
+            errors.append(worded(error, RuleText.PROFILE_NO_PARAMETERS))
         if self.kind is ProfileKind.DRAWN:
-            if self.drawing is None:
+            if self.drawing is None:  # then its file is missing too: one reason is enough
                 message = f"{DATA_FIELD}: a drawn profile needs a drawing: import a DXF file"
-                errors.append(FieldError(DATA_FIELD, None, "a drawing", message))
-            if not self.file_name:
+                error = FieldError(DATA_FIELD, None, "a drawing", message)
+                errors.append(worded(error, RuleText.DRAWING_MISSING))
+            elif not self.file_name:
                 message = f"{DATA_FIELD}: a drawn profile needs its file's name"
-                errors.append(FieldError(DATA_FIELD, self.file_name, "a file name", message))
-            if not (isinstance(self.file_sha256, str) and _SHA256.match(self.file_sha256)):
+                error = FieldError(DATA_FIELD, self.file_name, "a file name", message)
+                errors.append(worded(error, RuleText.DRAWING_FILE))
+            if self.drawing is not None and not (
+                isinstance(self.file_sha256, str) and _SHA256.match(self.file_sha256)
+            ):
                 allowed = "64 lowercase hexadecimal digits"
                 message = (
                     f"{DATA_FIELD}: file_sha256 = {format_value(self.file_sha256)} is not a "
                     f"SHA-256: allowed {allowed}"
                 )
-                errors.append(FieldError(DATA_FIELD, self.file_sha256, allowed, message))
+                error = FieldError(DATA_FIELD, self.file_sha256, allowed, message)
+                errors.append(worded(error, RuleText.DRAWING_FILE))
         elif self.drawing is not None:
             message = f"{DATA_FIELD}: only a drawn profile keeps a drawing, not {self.kind.value}"
-            errors.append(FieldError(DATA_FIELD, self.kind.value, "drawn", message))
+            error = FieldError(DATA_FIELD, self.kind.value, "drawn", message)
+            errors.append(worded(error, RuleText.PROFILE_NO_DRAWING))
         return errors
 
     def data(self) -> dict[str, object] | None:

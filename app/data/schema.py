@@ -283,6 +283,17 @@ MIGRATIONS: tuple[Migration, ...] = (
             "CHECK (detail_json IS NULL OR json_valid(detail_json))",
         ),
     ),
+    Migration(
+        12,
+        "the recipe's barrel type chosen, not guessed: fixed tilt, round or oval",
+        (
+            "ALTER TABLE recipes ADD COLUMN barrel_type TEXT NOT NULL DEFAULT 'fixed' "
+            "CHECK (barrel_type IN ('fixed', 'round', 'oval'))",
+            # What the recipe meant until now: a barrel with a short axis was oval.
+            "UPDATE recipes SET barrel_type = CASE WHEN tilt_mode = 'fixed' THEN 'fixed' "
+            "WHEN barrel_minor_diameter_mm IS NULL THEN 'round' ELSE 'oval' END",
+        ),
+    ),
 )
 
 SCHEMA_VERSION = MIGRATIONS[-1].version

@@ -21,8 +21,16 @@ import numbers
 from dataclasses import dataclass
 
 from app.geometry.bevel import SideTilts
-from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.errors import (
+    FieldError,
+    GeometryError,
+    format_value,
+    not_a_number,
+    out_of_range,
+    worded,
+)
 from app.geometry.limits import StaveLimits
+from app.geometry.rule_texts import RuleText
 
 
 def barrel_tilt_deg(width_mm: object, diameter_mm: float | None, limits: StaveLimits) -> float:
@@ -44,7 +52,9 @@ def barrel_tilt_deg(width_mm: object, diameter_mm: float | None, limits: StaveLi
     if not math.isfinite(width):
         raise GeometryError([not_a_number("width_mm", width_mm, allowed_width)])
     if not 0.0 < width < diameter_mm:
-        raise GeometryError([out_of_range("width_mm", width_mm, allowed_width)])
+        error = out_of_range("width_mm", width_mm, allowed_width)
+        rule = RuleText.BOARD_WIDER_THAN_BARREL
+        raise GeometryError([worded(error, rule, width_mm, diameter_mm)])
     tilt = math.degrees(math.asin(width / diameter_mm))
     if not limits.min_tilt_deg <= tilt <= limits.max_tilt_deg:
         low, high = format_value(limits.min_tilt_deg), format_value(limits.max_tilt_deg)
@@ -53,7 +63,10 @@ def barrel_tilt_deg(width_mm: object, diameter_mm: float | None, limits: StaveLi
             f"computed as asin(width_mm / barrel_diameter_mm) = asin({format_value(width)} / "
             f"{format_value(diameter_mm)})"
         )
-        raise GeometryError([out_of_range("tilt_deg", round(tilt, 3), allowed, note)])
+        error = out_of_range("tilt_deg", round(tilt, 3), allowed, note)
+        rule = RuleText.BARREL_TILT
+        shown = (width, round(tilt, 3), limits.min_tilt_deg, limits.max_tilt_deg)
+        raise GeometryError([worded(error, rule, *shown)])
     return tilt
 
 
@@ -82,7 +95,11 @@ def barrel_width_errors(
         f"barrel_diameter_mm = {format_value(diameter_mm)} fits no board of this recipe: "
         f"allowed {allowed}"
     )
-    return [FieldError("barrel_diameter_mm", diameter_mm, allowed, message)]
+    error = FieldError("barrel_diameter_mm", diameter_mm, allowed, message)
+    rule = RuleText.BARREL_FITS_NO_BOARD
+    widths = (round(limits.min_head_width_mm / width_ratio, 1), limits.max_width_mm)
+    tilts = (limits.min_tilt_deg, limits.max_tilt_deg)
+    return [worded(error, rule, diameter_mm, *widths, *tilts)]
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+
+from app.geometry.rule_texts import RuleText
 
 
 @dataclass(frozen=True)
@@ -18,13 +20,17 @@ class FieldError:
     """One violated rule: which field, what value, what would have been allowed.
 
     `message` is the complete one-line text (it names the field, the value and the range),
-    ready for a status line or a tooltip.
+    ready for a status line, a command line or an import report. `rule` and `args` say the
+    same in words for a screen: the rule's English template (``RuleText``, "" when the check
+    has none) and its arguments, already formatted.
     """
 
     field: str
     value: object
     allowed: str
     message: str
+    rule: str = ""
+    args: tuple[str, ...] = ()
 
     def __str__(self) -> str:
         return self.message
@@ -55,6 +61,15 @@ class GeometryError(ValueError):
     def fields(self) -> tuple[str, ...]:
         """The names of the offending fields, in the order found (may repeat)."""
         return tuple(error.field for error in self.errors)
+
+
+def worded(error: FieldError, rule: RuleText, *args: object) -> FieldError:
+    """``error`` with the words a screen shows for it (numbers formatted as typed)."""
+    return replace(error, rule=rule.value, args=tuple(_argument(a) for a in args))
+
+
+def _argument(value: object) -> str:
+    return value if isinstance(value, str) else format_value(value)
 
 
 def format_value(value: object) -> str:

@@ -24,7 +24,12 @@ import math
 import numbers
 from dataclasses import dataclass
 
-from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
+from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range, worded
+from app.geometry.rule_texts import RuleText
+
+NOT_NUMBER = RuleText.NOT_A_NUMBER
+UNIT_WORDS = {"deg": "°"}
+"""Units as the screens write them."""
 
 
 @dataclass(frozen=True)
@@ -59,11 +64,11 @@ DEFAULT_LIMITS = StaveLimits()
 def _finite(field: str, value: object, allowed: str, errors: list[FieldError]) -> float | None:
     """The value as a float if it is a finite real number; otherwise record an error."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), NOT_NUMBER, format_value(value)))
         return None
     number = float(value)
     if not math.isfinite(number):
-        errors.append(not_a_number(field, value, allowed))
+        errors.append(worded(not_a_number(field, value, allowed), NOT_NUMBER, format_value(value)))
         return None
     return number
 
@@ -82,7 +87,8 @@ def _in_closed_range(
     if number is None:
         return None
     if not low <= number <= high:
-        errors.append(out_of_range(field, value, allowed))
+        error = out_of_range(field, value, allowed)
+        errors.append(worded(error, RuleText.BETWEEN, value, low, high, UNIT_WORDS.get(unit, unit)))
         return None
     return number
 
@@ -117,7 +123,8 @@ def _check_width(value: object, limits: StaveLimits, errors: list[FieldError]) -
     if number is None:
         return None
     if not 0.0 < number <= limits.max_width_mm:
-        errors.append(out_of_range("width_mm", value, allowed))
+        error = out_of_range("width_mm", value, allowed)
+        errors.append(worded(error, RuleText.BOARD_WIDTH, value, limits.max_width_mm))
         return None
     return number
 
@@ -128,10 +135,12 @@ def _check_length_ratio(value: object, errors: list[FieldError]) -> float | None
     if number is None:
         return None
     if number < 0.0:
-        errors.append(out_of_range("length_ratio", value, allowed))
+        error = out_of_range("length_ratio", value, allowed)
+        errors.append(worded(error, RuleText.LENGTH_RATIO, value))
         return None
     if number >= 0.5:
-        errors.append(out_of_range("length_ratio", value, allowed, "no arc is left at 1/2 or more"))
+        error = out_of_range("length_ratio", value, allowed, "no arc is left at 1/2 or more")
+        errors.append(worded(error, RuleText.LENGTH_RATIO, value))
         return None
     return number
 
@@ -146,10 +155,12 @@ def _check_width_ratio(value: object, errors: list[FieldError]) -> float | None:
             f"width_ratio = {format_value(value)} leaves nothing to cut "
             f"(head as wide as the belly): allowed {allowed}"
         )
-        errors.append(FieldError("width_ratio", value, allowed, message))
+        error = FieldError("width_ratio", value, allowed, message)
+        errors.append(worded(error, RuleText.WIDTH_RATIO_ONE, value))
         return None
     if not 0.0 < number < 1.0:
-        errors.append(out_of_range("width_ratio", value, allowed))
+        error = out_of_range("width_ratio", value, allowed)
+        errors.append(worded(error, RuleText.WIDTH_RATIO_RANGE, value))
         return None
     return number
 
@@ -199,7 +210,29 @@ def _check_barrel_diameter(
         f"for width_mm = {format_value(width_mm)} the barrel belly diameter "
         f"W/sin(tilt) = {diameter:.1f} mm is outside {bounds}"
     )
-    errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+    error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+    d_low, d_high = limits.min_barrel_diameter_mm, limits.max_barrel_diameter_mm
+    if low <= high:
+        rule = RuleText.BOARD_BARREL
+        shown = (tilt_deg, width_mm, round(diameter, 1), d_low, d_high, round(low, 3))
+        errors.append(worded(error, rule, *shown, round(high, 3)))
+    else:
+        errors.append(worded(error, RuleText.BOARD_NO_TILT, width_mm, d_low, d_high))
+
+
+def width_ratio_minimum(limits: StaveLimits) -> float:
+    """The smallest width ratio k a recipe may have: below it, even the widest board's head
+    is narrower than the minimum head width (the recipe form's hint states the same bound)."""
+    return limits.min_head_width_mm / limits.max_width_mm
+
+
+def recipe_tilt_range(width_ratio: float, limits: StaveLimits) -> tuple[float, float]:
+    """The fixed tilts (deg) a recipe of width ratio ``width_ratio`` may have: some board of
+    min_head_width / k .. max_width mm then gives a barrel belly diameter W/sin(tilt) within
+    the limits (some width in that span fits iff sin(tilt) lies in this range)."""
+    low = _tilt_range_for_width(limits.min_head_width_mm / width_ratio, limits)[0]
+    high = _tilt_range_for_width(limits.max_width_mm, limits)[1]
+    return low, high
 
 
 def validate_recipe_fields(
@@ -224,7 +257,7 @@ def validate_recipe_fields(
     tilt = None if tilt_deg is None else _check_tilt(tilt_deg, limits, errors)
 
     if k is not None:
-        k_min = limits.min_head_width_mm / limits.max_width_mm
+        k_min = width_ratio_minimum(limits)
         if k < k_min:
             allowed = (
                 f"{format_value(limits.min_head_width_mm)}/{format_value(limits.max_width_mm)}"
@@ -234,7 +267,10 @@ def validate_recipe_fields(
                 f"the head would be narrower than {format_value(limits.min_head_width_mm)} mm "
                 f"even on a board of {format_value(limits.max_width_mm)} mm"
             )
-            errors.append(out_of_range("width_ratio", width_ratio, allowed, note))
+            error = out_of_range("width_ratio", width_ratio, allowed, note)
+            rule = RuleText.WIDTH_RATIO_NARROW
+            head, board = limits.min_head_width_mm, limits.max_width_mm
+            errors.append(worded(error, rule, width_ratio, head, board, round(k_min, 3)))
             k = None
 
     if k is not None and tilt is not None:
@@ -258,11 +294,13 @@ def validate_recipe_fields(
                 f"{format_value(limits.min_barrel_diameter_mm)}.."
                 f"{format_value(limits.max_barrel_diameter_mm)} mm"
             )
-            # Some width in [width_low, max_width] fits iff sin(tilt) lies in this range.
-            low = _tilt_range_for_width(width_low, limits)[0]
-            high = _tilt_range_for_width(limits.max_width_mm, limits)[1]
+            low, high = recipe_tilt_range(k, limits)
             allowed = f"{low:.3f} <= tilt <= {high:.3f} deg"
-            errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+            error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+            rule = RuleText.TILT_FITS_NO_BARREL
+            d_low, d_high = limits.min_barrel_diameter_mm, limits.max_barrel_diameter_mm
+            bounds = (d_low, d_high, round(low, 2), round(high, 2))
+            errors.append(worded(error, rule, tilt_deg, *bounds))
     return errors
 
 
@@ -300,7 +338,9 @@ def validate_stave(
             note = (
                 f"head width = width_ratio * width_mm = {format_value(k)} * {format_value(width)}"
             )
-            errors.append(out_of_range("head_width_mm", head_width, allowed, note))
+            error = out_of_range("head_width_mm", head_width, allowed, note)
+            rule = RuleText.HEAD_NARROW
+            errors.append(worded(error, rule, round(head_width, 1), limits.min_head_width_mm))
             head_width = None
 
     if width is not None and tilt is not None:
@@ -315,5 +355,8 @@ def validate_stave(
                 f"the bevels of a {format_value(thickness)} mm thick stave would meet "
                 f"before the top face at the {head_width:.1f} mm wide heads"
             )
-            errors.append(out_of_range("tilt_deg", tilt_deg, allowed, note))
+            error = out_of_range("tilt_deg", tilt_deg, allowed, note)
+            rule = RuleText.TOP_FACE
+            shown = (tilt_deg, thickness, round(head_width, 1), round(limit_deg, 3))
+            errors.append(worded(error, rule, *shown))
     return errors

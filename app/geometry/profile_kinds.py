@@ -28,7 +28,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from enum import Enum
 
-from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range
+from app.geometry.errors import FieldError, format_value, not_a_number, out_of_range, worded
+from app.geometry.rule_texts import RuleText
 
 
 class ProfileKind(Enum):
@@ -94,7 +95,8 @@ def validate_family_parameters(kind: ProfileKind, values: Mapping[str, object]) 
         if name not in specs:
             allowed = ", ".join(specs) or "none"
             message = f"{name} is not a parameter of the {kind.value} profile: allowed {allowed}"
-            errors.append(FieldError(name, values[name], allowed, message))
+            error = FieldError(name, values[name], allowed, message)
+            errors.append(worded(error, RuleText.PROFILE_UNKNOWN_PARAMETER))
     for name, spec in specs.items():
         value = values.get(name)
         if (
@@ -102,9 +104,12 @@ def validate_family_parameters(kind: ProfileKind, values: Mapping[str, object]) 
             or not isinstance(value, int | float)
             or not math.isfinite(value)
         ):
-            errors.append(not_a_number(name, value, spec.allowed))
+            error = not_a_number(name, value, spec.allowed)
+            errors.append(worded(error, RuleText.NOT_A_NUMBER, format_value(value)))
         elif not spec.minimum <= value <= spec.maximum:
-            errors.append(out_of_range(name, value, spec.allowed))
+            error = out_of_range(name, value, spec.allowed)
+            bounds = (spec.minimum, spec.maximum, spec.unit)
+            errors.append(worded(error, RuleText.BETWEEN, value, *bounds))
     return errors
 
 

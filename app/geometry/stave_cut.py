@@ -16,8 +16,16 @@ from enum import Enum
 
 from app.geometry.bevel import SideTilts, TiltRule
 from app.geometry.curved_profile import ProfileSpec, SideProfile
-from app.geometry.errors import FieldError, GeometryError, format_value, not_a_number, out_of_range
+from app.geometry.errors import (
+    FieldError,
+    GeometryError,
+    format_value,
+    not_a_number,
+    out_of_range,
+    worded,
+)
 from app.geometry.limits import StaveLimits, validate_stave
+from app.geometry.rule_texts import RuleText
 from app.geometry.toolpath import ToolPath, ToolPathParams, build_toolpath
 from app.geometry.travel import check_toolpath_travel
 
@@ -136,17 +144,21 @@ def cut_stave(
         raise StaveCutRefused(CutStage.TILT, exc.errors) from exc
     errors: list[FieldError] = []
     length_ratio = stave.length_ratio if stave.profile.uses_length_ratio() else 0.0
-    for tilt_deg in dict.fromkeys((tilts.a_deg, tilts.b_deg)):
+    sides = (("", tilts.a_deg),) if tilts.symmetric else (("A", tilts.a_deg), ("B", tilts.b_deg))
+    for side, tilt_deg in sides:
         errors.extend(
             error
-            for error in validate_stave(
-                stave.length_mm,
-                width_mm,
-                length_ratio,
-                stave.width_ratio,
-                limits,
-                thickness_mm=stave.thickness_mm,
-                tilt_deg=tilt_deg,
+            for error in (
+                side_tilt_error(found, side)
+                for found in validate_stave(
+                    stave.length_mm,
+                    width_mm,
+                    length_ratio,
+                    stave.width_ratio,
+                    limits,
+                    thickness_mm=stave.thickness_mm,
+                    tilt_deg=tilt_deg,
+                )
             )
             if error not in errors
         )
@@ -172,6 +184,20 @@ def cut_stave(
     return StaveCut(float(width_mm), tilts, profile, toolpath, float(board_mm))
 
 
+SIDE_TILT_FIELDS = {"A": "tilt_a_deg", "B": "tilt_b_deg"}
+"""The field of each side's bevel when the two sides differ."""
+
+
+def side_tilt_error(error: FieldError, side: str) -> FieldError:
+    """``error`` about the tilt said of one side ("tilt of side B") when the sides differ: a
+    refusal naming only ``tilt_deg`` does not say which of the two bevels is wrong."""
+    if not side or error.field != "tilt_deg":
+        return error
+    words = f"tilt of side {side}"
+    message = error.message.replace("tilt_deg", words, 1)
+    return replace(error, field=SIDE_TILT_FIELDS[side], message=message)
+
+
 def roughing_allowances_mm(depth_mm: float, max_depth_mm: float | None) -> tuple[float, ...]:
     """What each roughing pass leaves on the edge when ``depth_mm`` is more than the router
     takes in one pass: n = ceil(depth / max) equal passes, the finishing one last.
@@ -194,7 +220,9 @@ def _target_errors(board_mm: object, target_mm: float, limits: StaveLimits) -> l
         return [not_a_number("width_mm", board_mm, allowed)]
     if not board_mm >= target_mm:  # NaN too
         note = "the board is too narrow for the stave it should become"
-        return [out_of_range("width_mm", board_mm, allowed, note)]
+        error = out_of_range("width_mm", board_mm, allowed, note)
+        return [worded(error, RuleText.BOARD_BELOW_TARGET, board_mm, target_mm)]
     if board_mm > limits.max_width_mm:
-        return [out_of_range("width_mm", board_mm, allowed)]
+        error = out_of_range("width_mm", board_mm, allowed)
+        return [worded(error, RuleText.BOARD_WIDTH, board_mm, limits.max_width_mm)]
     return []

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import math
 
-from app.geometry.errors import FieldError, format_value
-from app.geometry.limits import StaveLimits
+from app.geometry.errors import FieldError, format_value, worded
+from app.geometry.limits import UNIT_WORDS, StaveLimits
+from app.geometry.rule_texts import RuleText
 from app.geometry.toolpath import ToolPath
 
 
@@ -38,16 +39,19 @@ def check_toolpath_travel(toolpath: ToolPath, limits: StaveLimits) -> list[Field
             f"{'-inf' if travel_min is None else format_value(travel_min)} <= {axis} <= "
             f"{'inf' if travel_max is None else format_value(travel_max)} {unit}"
         )
+        bounds = (UNIT_WORDS.get(unit, unit), travel_min, travel_max)
         if travel_min is not None and low < travel_min:
             message = (
                 f"{field} = {low:.3f} is out of range: allowed {allowed} "
                 f"(the tool path goes beyond the {axis} axis travel)"
             )
-            errors.append(FieldError(field, low, allowed, message))
+            error = FieldError(field, low, allowed, message)
+            errors.append(worded(error, RuleText.TRAVEL, axis, round(low, 3), *bounds))
         if travel_max is not None and high > travel_max:
             message = (
                 f"{field} = {high:.3f} is out of range: allowed {allowed} "
                 f"(the tool path goes beyond the {axis} axis travel)"
             )
-            errors.append(FieldError(field, high, allowed, message))
+            error = FieldError(field, high, allowed, message)
+            errors.append(worded(error, RuleText.TRAVEL, axis, round(high, 3), *bounds))
     return errors

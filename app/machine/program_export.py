@@ -163,7 +163,7 @@ def parametric_stave(
         message = (
             f"recipe {recipe.name!r}: its tilt rule has no parametric program: allowed {allowed}"
         )
-        raise GeometryError([FieldError("tilt_mode", recipe.tilt_mode.value, allowed, message)])
+        raise GeometryError([FieldError("barrel_type", recipe.barrel_type.value, allowed, message)])
     return ParametricStave(
         length_mm=recipe.length_mm,
         length_ratio=recipe.length_ratio.value if recipe.profile.spec.uses_length_ratio() else 0.0,

@@ -1,7 +1,8 @@
 """Every English text the screens show that comes from another layer's catalogue.
 
 Why collected here: alarm titles, descriptions, causes and remedies, refusal reasons (the
-templates of ``app.machine.refusals.Reason``) and parameter descriptions are written in
+templates of ``app.machine.refusals.Reason``), the recipe rules' words
+(``app.geometry.rule_texts.RuleText``) and parameter descriptions are written in
 English by the machine and data layers (no Qt there); the screens translate them by their
 English text. This module lists them all, from the catalogues themselves, so that
 ``resources/translations/update.py`` can put them into the .ts files and a test can check that
@@ -12,9 +13,15 @@ silently appearing in English.
 from __future__ import annotations
 
 from app.data.parameters import PARAMETERS
+from app.geometry.rule_texts import RuleText
 from app.machine.alarms import CATALOGUE, AlarmDefinition
 from app.machine.refusals import Reason
-from app.screens.texts import ALARM_TEXT_CONTEXT, MACHINE_TEXT_CONTEXT, PARAMETER_CONTEXT
+from app.screens.texts import (
+    ALARM_TEXT_CONTEXT,
+    MACHINE_TEXT_CONTEXT,
+    PARAMETER_CONTEXT,
+    RULE_TEXT_CONTEXT,
+)
 
 # The screens' own wording for a missing machine (shown where a refusal would be).
 SCREEN_MACHINE_TEXTS: tuple[str, ...] = ("no connection to the machine",)
@@ -31,6 +38,7 @@ def catalogue_texts() -> dict[str, list[str]]:
         MACHINE_TEXT_CONTEXT: sorted({r.value for r in Reason} | set(SCREEN_MACHINE_TEXTS)),
         ALARM_TEXT_CONTEXT: sorted({text for d in CATALOGUE.values() for text in alarm_texts(d)}),
         PARAMETER_CONTEXT: sorted({spec.description for spec in PARAMETERS}),
+        RULE_TEXT_CONTEXT: sorted({rule.value for rule in RuleText}),
     }
 
 

@@ -30,7 +30,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import BarrelType, Recipe
 from app.machine.commands import (
     Abandon,
     Home,
@@ -47,6 +47,7 @@ from app.machine.states import MachineState
 from app.screens.barrel_panel import BarrelPanel
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_duration, format_optional
+from app.screens.recipe_chooser import RecipeChooser
 from app.screens.texts import step_text
 from app.screens.widgets.buttons import touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
@@ -366,12 +367,11 @@ class MainScreen(Screen):
 
     def open_recipe_list(self) -> None:
         self.reload_recipes()
-        choices = [(f"{r.id}  {r.name}", r.id) for r in self.recipes]
-        overlay = ChoiceOverlay(
-            self.tr("Choose a recipe"),
-            choices,
-            current=self.snapshot.recipe_id if self.snapshot else None,
-            columns=2,
+        overlay = RecipeChooser(
+            self.recipes,
+            self.snapshot.recipe_id if self.snapshot else None,
+            self.context.open,
+            self.context.keyboard_layout,
         )
         overlay.chosen.connect(lambda recipe_id: self.context.send(SelectRecipe(recipe_id)))
         self.context.open(overlay)
@@ -557,7 +557,7 @@ class MainScreen(Screen):
     def _update_barrel(self, snapshot: MachineSnapshot) -> None:
         """The barrel panel, while the selected recipe makes barrels or one is raised."""
         index = self._current_index()
-        barrels = index is not None and self.recipes[index].tilt_mode is TiltMode.BARREL
+        barrels = index is not None and self.recipes[index].barrel_type is not BarrelType.FIXED_TILT
         self.barrel_panel.setVisible(barrels or snapshot.barrel is not None)
         self.barrel_panel.show_barrel(snapshot.barrel, snapshot)
 

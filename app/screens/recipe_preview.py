@@ -15,6 +15,7 @@ from app.data.recipe import Recipe
 from app.geometry.limits import StaveLimits
 from app.geometry.outline import stave_drawing
 from app.geometry.stave_cut import StaveCutRefused, cut_stave
+from app.screens.texts import rule_message
 
 Point = tuple[float, float]
 
@@ -43,7 +44,8 @@ def preview_recipe(
     recipe: Recipe, width_mm: float, params: Mapping[str, float], limits: StaveLimits
 ) -> RecipePreview:
     """Solve ``recipe`` for a board of ``width_mm``; never raises for bad input (the reasons
-    are in ``errors``, one line each, naming the field, the value and what is allowed)."""
+    are in ``errors``, one line each in the user's language, saying the value and what is
+    allowed)."""
     try:
         cut = cut_stave(recipe.stave, width_mm, params, limits)
     except StaveCutRefused as exc:
@@ -52,7 +54,7 @@ def preview_recipe(
             width_mm,
             tilt_deg=None if tilts is None else tilts.a_deg,
             tilt_b_deg=None if tilts is None else tilts.b_deg,
-            errors=tuple(e.message for e in exc.errors),
+            errors=tuple(rule_message(e) for e in exc.errors),  # in words, translated
         )
     drawing = stave_drawing(cut.toolpath)
     return RecipePreview(

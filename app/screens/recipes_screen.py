@@ -34,12 +34,12 @@ from PySide6.QtWidgets import (
 
 from app.data.dxf_profile import DxfProfileError, read_dxf_profile
 from app.data.errors import DataError, FieldValidationError
-from app.data.exchange import export_recipes, import_recipes
-from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, Recipe, TiltMode
+from app.data.exchange import ImportReport, export_recipes, import_recipes
+from app.data.recipe import NAME_MAX_CHARS, NOTE_MAX_CHARS, BarrelType, Recipe
 from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
 from app.geometry.errors import FieldError
-from app.geometry.limits import StaveLimits
+from app.geometry.limits import StaveLimits, recipe_tilt_range, width_ratio_minimum
 from app.geometry.profile_kinds import (
     EXPONENT,
     SEMI_AXIS_RATIO,
@@ -54,9 +54,11 @@ from app.machine.program_export import ExportFormat, export_file_name, export_te
 from app.machine.snapshot import MachineSnapshot
 from app.screens.base import Screen, ScreenContext, refusal
 from app.screens.formatting import format_number, format_optional
+from app.screens.recipe_filter import RecipeFilterBar
 from app.screens.recipe_preview import RecipePreview, preview_recipe
+from app.screens.texts import rule_message
 from app.screens.theme import set_style_property
-from app.screens.widgets.buttons import touch_button
+from app.screens.widgets.buttons import elided_button, touch_button
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay, MessageOverlay
 from app.screens.widgets.file_chooser import FileChooser, default_exchange_dir
 from app.screens.widgets.keyboard import TextKeyboard
@@ -69,6 +71,11 @@ from app.screens.width_ranges import PENDING, WidthRanges
 DEFAULT_PREVIEW_WIDTH_MM = 150.0
 RANGE_POLL_MS = 50  # how often the list looks for width ranges the worker has finished
 LABEL_WIDTH_PX = 165
+LIST_WIDTH_PX = 220
+TEXT_ROWS = ("name", "note", "drawing")
+"""Rows whose value is text: under their label, across the form (a name is read whole)."""
+MACHINE_MARK = "▶"
+"""Marks the recipe on the machine in the list."""
 NUMBER_FIELDS = (
     "length_mm",
     "thickness_mm",
@@ -95,7 +102,7 @@ FIELDS = (
     "exponent",
     "semi_axis_ratio",
     "drawing",
-    "tilt_mode",
+    "barrel_type",
     "tilt_deg",
     "barrel_diameter_mm",
     "barrel_minor_diameter_mm",
@@ -151,7 +158,7 @@ def new_recipe_template(name: str) -> Recipe:
         thickness_mm=27.0,
         length_ratio=Ratio(1, 4),
         width_ratio=Ratio(3, 4),
-        tilt_mode=TiltMode.FIXED,
+        barrel_type=BarrelType.FIXED_TILT,
         tilt_deg=7.5,
         barrel_diameter_mm=None,
         barrel_perimeter_mm=None,
@@ -187,7 +194,11 @@ class RecipesScreen(Screen):
         self.recipe_list.setFocusPolicy(Qt.FocusPolicy.NoFocus)
         self.recipe_list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
         self.recipe_list.setTextElideMode(Qt.TextElideMode.ElideRight)
+        self.recipe_list.setWordWrap(True)  # a long name takes two lines: read whole
         self.recipe_list.itemClicked.connect(self._list_clicked)
+        self.filter_bar = RecipeFilterBar(context.open, context.keyboard_layout, compact=True)
+        self.filter_bar.changed.connect(lambda _filter: self.reload())
+        self.list_count = styled_label("", "caption", "recipeCount")
         kinetic_scroll(self.recipe_list)
         self.new_button = touch_button("newRecipe")
         self.copy_button = touch_button("copyRecipe")
@@ -207,12 +218,18 @@ class RecipesScreen(Screen):
         list_buttons.addWidget(self.import_button, 2, 0)
         list_buttons.addWidget(self.export_button, 2, 1)
         list_layout = QVBoxLayout()
-        list_layout.addWidget(self.list_title)
+        title_row = QHBoxLayout()
+        title_row.addWidget(self.list_title, 1)
+        assert self.filter_bar.type_button is not None  # a compact bar
+        title_row.addWidget(self.filter_bar.type_button)  # beside the title: room for a name
+        list_layout.addLayout(title_row)
+        list_layout.addWidget(self.filter_bar)
+        list_layout.addWidget(self.list_count)
         list_layout.addWidget(self.recipe_list, 1)
         list_layout.addLayout(list_buttons)
         self.list_widget = QWidget()
         self.list_widget.setLayout(list_layout)
-        self.list_widget.setFixedWidth(220)
+        self.list_widget.setFixedWidth(LIST_WIDTH_PX)
 
         # -- editor ----------------------------------------------------------------------------
         editor = QFrame()
@@ -240,34 +257,35 @@ class RecipesScreen(Screen):
             for text_label in (label, caption):
                 text_label.setFixedWidth(LABEL_WIDTH_PX)  # the values line up
             row.setColumnStretch(1, 1)
-            if name == "tilt_mode":
-                self.fixed_button = touch_button("tiltFixed", "tab")
-                self.barrel_button = touch_button("tiltBarrel", "tab")
+            if name == "barrel_type":
+                self.type_buttons: dict[BarrelType, QPushButton] = {}
                 group = QButtonGroup(self)
                 mode_row = QHBoxLayout()
-                for button, mode in (
-                    (self.fixed_button, TiltMode.FIXED),
-                    (self.barrel_button, TiltMode.BARREL),
-                ):
+                for kind in BarrelType:
+                    button = touch_button(f"barrelType_{kind.value}", "tab")
                     button.setCheckable(True)
                     group.addButton(button)
-                    button.clicked.connect(lambda _=False, m=mode: self.set_field("tilt_mode", m))
+                    button.clicked.connect(lambda _=False, k=kind: self.set_barrel_type(k))
                     mode_row.addWidget(button)
-                row.addLayout(mode_row, 0, 1, 2, 1)
+                    self.type_buttons[kind] = button
+                row.addLayout(mode_row, 2, 0, 1, 2)  # three choices need the full width
             else:
-                button = touch_button(f"field_{name}", "field")
-                if name in ("name", "note", "drawing"):
+                button = elided_button(f"field_{name}", "field")
+                if name in TEXT_ROWS:
                     button.setProperty("align", "left")  # show where a long text begins
                 button.clicked.connect(lambda _=False, n=name: self.edit_field(n))
                 # Long names and notes must not widen the form: the text is cut instead.
                 button.setMinimumWidth(150)
                 button.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
-                row.addWidget(button, 0, 1, 2, 1)
+                if name in TEXT_ROWS:
+                    row.addWidget(button, 2, 0, 1, 2)  # the text gets the row's full width
+                else:
+                    row.addWidget(button, 0, 1, 2, 1)
                 self.field_buttons[name] = button
             error = styled_label("", "error", f"error_{name}")
             error.setWordWrap(True)
             error.setVisible(False)
-            row.addWidget(error, 2, 0, 1, 2)
+            row.addWidget(error, 3, 0, 1, 2)
             rows.addLayout(row)
             self.row_widgets[name] = [label, caption, error]
             if name in self.field_buttons:
@@ -370,7 +388,7 @@ class RecipesScreen(Screen):
             "exponent": self.tr("Exponent n"),
             "semi_axis_ratio": self.tr("Semi-axis a : L/2"),
             "drawing": self.tr("Drawing (DXF)"),
-            "tilt_mode": self.tr("Tilt"),
+            "barrel_type": self.tr("Barrel type"),
             "tilt_deg": self.tr("Tilt α"),
             "barrel_diameter_mm": self.tr("Barrel diameter"),
             "barrel_minor_diameter_mm": self.tr("Oval: short axis"),
@@ -381,8 +399,22 @@ class RecipesScreen(Screen):
         return titles[name]
 
     def field_range(self, name: str) -> tuple[float, float, str]:
-        """(minimum, maximum, unit) of a number field, from the machine's limits."""
+        """(minimum, maximum, unit) of a number field, from the machine's limits; a fixed
+        tilt's from the draft's width ratio too (the recipe's validation refuses a tilt for
+        which no board of the recipe fits a barrel within the limits)."""
         limits = self.limits
+        if name == "tilt_deg" and self.draft is not None:
+            k = self.draft.width_ratio.value
+            if 0.0 < k < 1.0:
+                low, high = recipe_tilt_range(k, limits)
+                if low <= high:
+                    # Rounded inwards: the keypad never offers a bound the rule refuses.
+                    return (math.ceil(low * 100) / 100, math.floor(high * 100) / 100, "°")
+        if name == "target_width_mm" and self.draft is not None:
+            k = self.draft.width_ratio.value
+            if 0.0 < k < 1.0:  # the head of the stave to stock must keep its minimum width
+                low = max(limits.min_head_width_mm, limits.min_head_width_mm / k)
+                return (math.ceil(low * 10) / 10, limits.max_width_mm, "mm")
         d_low = limits.min_barrel_diameter_mm or 1.0
         d_high = limits.max_barrel_diameter_mm or 100_000.0
         ranges = {
@@ -397,22 +429,26 @@ class RecipesScreen(Screen):
         return ranges[name]
 
     def range_text(self, name: str) -> str:
+        """The hint under a field: the bounds the recipe's validation applies, computed by
+        the same functions (a hint must never promise what Save then refuses)."""
         if name in NUMBER_FIELDS:
             low, high, unit = self.field_range(name)
             text = f"{format_number(low)} … {format_number(high)} {unit}"
-            if name in OPTIONAL_NUMBERS:
+            if name in OPTIONAL_NUMBERS and not self._required(name):
                 text += " " + self.tr("(optional)")
             return text
         if name == "length_ratio":
             return self.tr("0 to below 1/2")
         if name == "width_ratio":
-            return self.tr("above 0, below 1")
+            return self.tr("%1 to below 1").replace(
+                "%1", format_number(width_ratio_minimum(self.limits), 3)
+            )
         if name == "name":
             return self.tr("1 to %1 characters").replace("%1", str(NAME_MAX_CHARS))
         if name == "note":
             return self.tr("optional")
-        if name == "tilt_mode":
-            return self.tr("fixed, or from the barrel")
+        if name == "barrel_type":
+            return self.tr("the tilt: fixed, or from the barrel")
         if name in FAMILY_FIELDS:
             spec = FAMILY_FIELDS[name]
             return f"{format_number(spec.minimum)} … {format_number(spec.maximum)}"
@@ -421,6 +457,21 @@ class RecipesScreen(Screen):
         if name == "drawing":
             return self.tr("one side, head to head; scaled to L and W")
         return ""
+
+    def barrel_type_titles(self) -> dict[BarrelType, str]:
+        return {
+            BarrelType.FIXED_TILT: self.tr("Fixed tilt"),
+            BarrelType.ROUND: self.tr("Round"),
+            BarrelType.OVAL: self.tr("Oval"),
+        }
+
+    def _required(self, name: str) -> bool:
+        """A barrel's belly diameter is needed once the tilt comes from the barrel, its short
+        axis once the barrel is oval (the recipe's validation refuses them missing)."""
+        kind = self.draft.barrel_type if self.draft is not None else BarrelType.FIXED_TILT
+        if name == "barrel_diameter_mm":
+            return kind is not BarrelType.FIXED_TILT
+        return name == "barrel_minor_diameter_mm" and kind is BarrelType.OVAL
 
     def kind_title(self, kind: ProfileKind) -> str:
         titles = {
@@ -435,6 +486,7 @@ class RecipesScreen(Screen):
 
     def retranslate(self) -> None:
         self.list_title.setText(self.tr("Recipes"))
+        self.filter_bar.retranslate()
         self.new_button.setText(self.tr("New"))
         self.copy_button.setText(self.tr("Copy"))
         self.delete_button.setText(self.tr("Delete"))
@@ -443,8 +495,8 @@ class RecipesScreen(Screen):
         self.save_button.setText(self.tr("Save"))
         self.discard_button.setText(self.tr("Discard"))
         self.use_button.setText(self.tr("Use on machine"))
-        self.fixed_button.setText(self.tr("Fixed"))
-        self.barrel_button.setText(self.tr("Barrel"))
+        for kind, text in self.barrel_type_titles().items():
+            self.type_buttons[kind].setText(text)
         self.preview_title.setText(self.tr("Preview"))
         self.width_caption.setText(self.tr("Board width for the preview"))
         self.program_button.setText(self.tr("G-code, DXF…"))
@@ -466,13 +518,21 @@ class RecipesScreen(Screen):
     def reload(self, select_id: int | None = None) -> None:
         """Read the recipes again and select ``select_id`` (or keep the current one)."""
         self.recipes = self.context.database.list_recipes()
+        wanted = self.filter_bar.filter
+        shown = wanted.apply(self.recipes)
+        set_text(
+            self.list_count,
+            self.tr("%1 of %2 recipes")
+            .replace("%1", str(len(shown)))
+            .replace("%2", str(len(self.recipes))),
+        )
         keep = (
             select_id
             if select_id is not None
             else (self.current.id if self.current is not None else None)
         )
         self.recipe_list.clear()
-        for recipe in self.recipes:
+        for recipe in shown:
             item = QListWidgetItem(self._list_text(recipe))
             item.setData(Qt.ItemDataRole.UserRole, recipe.id)
             self.recipe_list.addItem(item)
@@ -504,6 +564,10 @@ class RecipesScreen(Screen):
             )
         else:
             range_text = self.tr("cuts no board here")
+        if self.snapshot is not None and self.snapshot.recipe_id == recipe.id:
+            return f"{MACHINE_MARK} {recipe.id}  {recipe.name}\n" + self.tr(
+                "on the machine, %1"
+            ).replace("%1", range_text)
         return f"{recipe.id}  {recipe.name}\n{range_text}"
 
     def fill_width_ranges(self) -> None:
@@ -667,7 +731,7 @@ class RecipesScreen(Screen):
                     .replace("%1", value)
                     .replace("%2", str(clash.id))
                 )
-        return "\n".join(p.message for p in problems)
+        return "\n".join(rule_message(p) for p in problems)
 
     @staticmethod
     def _with(recipe: Recipe, name: str, value: object) -> Recipe:
@@ -734,8 +798,8 @@ class RecipesScreen(Screen):
         editing = draft is not None
         for button in self.field_buttons.values():
             button.setEnabled(editing)
-        self.fixed_button.setEnabled(editing)
-        self.barrel_button.setEnabled(editing)
+        for type_button in self.type_buttons.values():
+            type_button.setEnabled(editing)
         if draft is None:
             set_text(self.editor_title, self.tr("No recipe"))
             for button in self.field_buttons.values():
@@ -756,8 +820,8 @@ class RecipesScreen(Screen):
             "name": draft.name,
             "length_mm": f"{format_number(draft.length_mm)} mm",
             "thickness_mm": f"{format_number(draft.thickness_mm)} mm",
-            "length_ratio": f"{draft.length_ratio}  = {draft.length_ratio.value:.4f}",
-            "width_ratio": f"{draft.width_ratio}  = {draft.width_ratio.value:.4f}",
+            "length_ratio": f"{draft.length_ratio} = {draft.length_ratio.value:.2f}",
+            "width_ratio": f"{draft.width_ratio} = {draft.width_ratio.value:.2f}",
             "profile_kind": self.kind_title(draft.profile.kind),
             "exponent": format_optional(dict(draft.profile.params).get("exponent"), 3, ""),
             "semi_axis_ratio": format_optional(
@@ -769,18 +833,19 @@ class RecipesScreen(Screen):
             "barrel_minor_diameter_mm": format_optional(draft.barrel_minor_diameter_mm, 1, "mm"),
             "barrel_perimeter_mm": format_optional(draft.barrel_perimeter_mm, 1, "mm"),
             "target_width_mm": format_optional(draft.target_width_mm, 1, "mm"),
-            "note": (draft.note[:60] + "…" if len(draft.note) > 60 else draft.note) or "—",
+            "note": draft.note or "—",  # elided on the button, whole on the keyboard
         }
         for name, text in values.items():
             set_text(self.field_buttons[name], text)
-        self.fixed_button.setChecked(draft.tilt_mode is TiltMode.FIXED)
-        self.barrel_button.setChecked(draft.tilt_mode is TiltMode.BARREL)
+        for kind, type_button in self.type_buttons.items():
+            type_button.setChecked(draft.barrel_type is kind)
         self._show_profile_rows(draft.profile.kind)
+        self._show_barrel_rows(draft.barrel_type)
         self.errors = field_errors(draft, self.limits)
         for name in FIELDS:
             problems = self.errors.get(name, [])
             label = self.error_labels[name]
-            set_text(label, "\n".join(p.message for p in problems))
+            set_text(label, "\n".join(rule_message(p) for p in problems))
             label.setVisible(bool(problems))
             field_button = self.field_buttons.get(name)
             if field_button is not None:
@@ -792,6 +857,62 @@ class RecipesScreen(Screen):
                     field_button, "changed", "true" if changed and not problems else "false"
                 )
         self._update_buttons()
+
+    def set_barrel_type(self, kind: BarrelType) -> None:
+        """The touch choice of fixed tilt, round or oval. A short axis belongs only to an oval:
+        leaving oval clears it (saving would refuse it), coming back restores the saved one."""
+        draft = self.draft
+        if draft is None:
+            return
+        changed = replace(draft, barrel_type=kind)
+        if kind is not BarrelType.OVAL:
+            changed = replace(changed, barrel_minor_diameter_mm=None)
+        elif changed.barrel_minor_diameter_mm is None and self.current is not None:
+            changed = replace(
+                changed, barrel_minor_diameter_mm=self.current.barrel_minor_diameter_mm
+            )
+        self.draft = changed
+        self.update_preview()
+        self.show_draft()
+
+    def _show_barrel_rows(self, kind: BarrelType) -> None:
+        """The barrel's rows only for a barrel, the short axis only for an oval; with a barrel
+        the tilt is computed for each board, so its row shows the value and is not a field."""
+        barrel = kind is not BarrelType.FIXED_TILT
+        name = "barrel_minor_diameter_mm"
+        shown = kind is BarrelType.OVAL
+        for widget in self.row_widgets[name]:
+            if widget is self.error_labels[name] and shown:
+                continue
+            widget.setVisible(shown)
+        for row in ("barrel_diameter_mm", name, "target_width_mm"):  # depend on the draft
+            set_text(self.range_labels[row], self.range_text(row))
+        self.field_buttons["tilt_deg"].setEnabled(not barrel)
+        self._show_computed_tilt()
+
+    def _show_computed_tilt(self) -> None:
+        """With a barrel, the tilt row shows the tilt the barrel gives the preview's board,
+        read-only (the machine computes it for each measured board); its caption says so."""
+        draft = self.draft
+        if draft is None or draft.barrel_type is BarrelType.FIXED_TILT:
+            set_text(self.range_labels["tilt_deg"], self.range_text("tilt_deg"))
+            return
+        set_text(
+            self.range_labels["tilt_deg"],
+            self.tr("from the barrel, for a %1 mm board").replace(
+                "%1", format_number(self.preview_width_mm, 1)
+            ),
+        )
+        preview = self.preview
+        if preview is None or preview.tilt_deg is None:
+            set_text(self.field_buttons["tilt_deg"], "—")
+            return
+        text = f"{format_number(preview.tilt_deg, 2)} °"
+        if preview.tilt_b_deg is not None and preview.tilt_b_deg != preview.tilt_deg:
+            text = (
+                f"{format_number(preview.tilt_deg, 2)} / {format_number(preview.tilt_b_deg, 2)} °"
+            )
+        set_text(self.field_buttons["tilt_deg"], text)
 
     def _show_profile_rows(self, kind: ProfileKind) -> None:
         """Only the rows the kind uses: a family's parameters, a drawing's file, lambda only
@@ -868,6 +989,7 @@ class RecipesScreen(Screen):
             tilt_text = f"A {tilt_text} / B {format_optional(preview.tilt_b_deg, 2, '°')}"
         set_text(self.result_labels["tilt"], tilt_text)
         set_text(self.preview_errors, "\n".join(errors))
+        self._show_computed_tilt()
 
     def _width_range(self, recipe: Recipe) -> WidthRange | None:
         """The recipe's range of board widths on this machine (cached: a scan of the
@@ -891,7 +1013,7 @@ class RecipesScreen(Screen):
             saved = self.context.database.save_recipe(draft, user)
         except FieldValidationError as exc:
             self.errors = {}
-            lines = [e.message for e in exc.errors]
+            lines = [rule_message(e) for e in exc.errors]
             self.show_draft()
             self._message(self.tr("Recipe not saved"), "\n".join(lines))
             return
@@ -1052,13 +1174,37 @@ class RecipesScreen(Screen):
             self._message(self.tr("Import failed"), str(exc))
             return
         self.reload()
-        lines = report.lines()
+        lines = self.import_lines(report)
         shown = lines[:12] + (
             [self.tr("… and %1 more lines").replace("%1", str(len(lines) - 12))]
             if len(lines) > 12
             else []
         )
         self._message(self.tr("Import"), "\n".join(shown))
+
+    def import_lines(self, report: ImportReport) -> list[str]:
+        """The import's report in the user's language: the counts, then each rejected row's
+        reasons in words (a reason about the file's own columns, an unknown or missing one,
+        names that column as the file spells it)."""
+        lines = [
+            self.tr("%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected")
+            .replace("%1", report.path.name)
+            .replace("%2", str(report.accepted))
+            .replace("%3", str(len(report.created)))
+            .replace("%4", str(len(report.updated)))
+            .replace("%5", str(len(report.unchanged)))
+            .replace("%6", str(len(report.rejected)))
+        ]
+        for row in report.rejected:
+            label = (
+                self.tr("row %1 (%2)").replace("%1", str(row.row)).replace("%2", row.name)
+                if row.name
+                else self.tr("row %1").replace("%1", str(row.row))
+            )
+            for error in row.errors:
+                reason = rule_message(error) if error.rule else error.message
+                lines.append(f"{label}: {reason}")
+        return lines
 
     def export_recipes(self, directory: Path | None = None) -> None:
         name = f"recipes-{datetime.now().strftime('%Y%m%d-%H%M')}.json"
@@ -1152,9 +1298,11 @@ class RecipesScreen(Screen):
             or previous.allowed.get("SelectRecipe") != snapshot.allowed.get("SelectRecipe")
         ):
             self._update_buttons()
+        if previous is None or previous.recipe_id != snapshot.recipe_id:
+            self._relabel()  # the mark moves to the recipe now on the machine
 
     def apply_scale(self, scale: float) -> None:
-        self.list_widget.setFixedWidth(round(220 * scale))
+        self.list_widget.setFixedWidth(round(LIST_WIDTH_PX * scale))
         for name in FIELDS:
             for label in (self.field_labels[name], self.range_labels[name]):
                 label.setFixedWidth(round(LABEL_WIDTH_PX * scale))

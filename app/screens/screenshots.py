@@ -21,6 +21,7 @@ from PySide6.QtCore import QtMsgType, qInstallMessageHandler
 from PySide6.QtWidgets import QApplication
 
 from app.data.production_stats import StatsRange, range_window
+from app.data.recipe import BarrelType
 from app.data.records import AlarmEvent, AlarmState, PieceResult
 from app.data.shifts import ShiftPlan
 from app.data.users import Role
@@ -48,6 +49,8 @@ from app.machine.states import CycleStep, MachineState
 from app.resources import resources_dir
 from app.screens.application import create_main_window, ensure_application
 from app.screens.main_window import MainWindow
+from app.screens.recipe_chooser import RecipeChooser
+from app.screens.recipe_filter import RecipeFilter
 
 if TYPE_CHECKING:
     from app.data.database import Database
@@ -406,6 +409,21 @@ def render_screenshots(
             production.jobs.wait()  # type: ignore[attr-defined]
             driver.settle()
             shoot("production")
+
+            # Finding a recipe: the Recipes list searched and filtered, the main screen's
+            # chooser filtered by barrel type.
+            window.show_screen("recipes")
+            recipes_page = window.page("recipes")
+            recipes_page.filter_bar.set_filter(RecipeFilter("ea", BarrelType.ROUND))  # type: ignore[attr-defined]
+            shoot("recipes-search")
+            recipes_page.filter_bar.set_filter(RecipeFilter())  # type: ignore[attr-defined]
+            window.show_screen("main")
+            window.page("main").open_recipe_list()  # type: ignore[attr-defined]
+            chooser = window.overlay()
+            if isinstance(chooser, RecipeChooser):
+                chooser.filter_bar.set_barrel_type(BarrelType.ROUND)
+                shoot("main-recipe-chooser")
+                chooser.reject()
 
             # The closing stave: boards are cut until one stave can close the barrel, and
             # the barrel panel asks what the next board becomes.

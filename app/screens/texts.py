@@ -17,6 +17,7 @@ from PySide6.QtCore import QCoreApplication
 
 from app.data.records import AlarmEvent
 from app.data.users import Role
+from app.geometry.errors import FieldError
 from app.machine.alarms import definition_of
 from app.machine.refusals import Refusal, refusal_from_json
 from app.machine.snapshot import AlarmState, AlarmView
@@ -34,6 +35,10 @@ def QT_TRANSLATE_NOOP(context: str, text: str) -> str:
 MACHINE_TEXT_CONTEXT = "MachineText"
 ALARM_TEXT_CONTEXT = "AlarmText"
 PARAMETER_CONTEXT = "Parameters"
+RULE_TEXT_CONTEXT = "RuleText"
+GENERIC_RULE_TEXT = QT_TRANSLATE_NOOP("RuleText", "This value is not allowed")
+"""What a screen says of an error whose check has no words of its own (never a program's
+field name)."""
 
 _STATES: dict[MachineState, str] = {
     MachineState.POWER_UP: QT_TRANSLATE_NOOP("States", "STARTING UP"),
@@ -131,6 +136,18 @@ def machine_text(message: Refusal | str | None) -> str:
     if isinstance(message, str):
         return _t(MACHINE_TEXT_CONTEXT, message)
     return message.text(lambda template: _t(MACHINE_TEXT_CONTEXT, template))
+
+
+def rule_message(error: FieldError) -> str:
+    """A broken recipe rule in the user's language: the rule's template translated, then its
+    arguments filled in (``%1``, ``%2``...). The error's ``message`` names program fields and
+    is for files and the command line, never for the screen."""
+    if not error.rule:
+        return _t(RULE_TEXT_CONTEXT, GENERIC_RULE_TEXT)
+    text = _t(RULE_TEXT_CONTEXT, error.rule)
+    for index in range(len(error.args), 0, -1):  # %10 before %1
+        text = text.replace(f"%{index}", error.args[index - 1])
+    return text
 
 
 def alarm_title(code: str) -> str:

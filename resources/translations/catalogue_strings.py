@@ -463,4 +463,80 @@ TEXTS = [
     QT_TRANSLATE_NOOP("Parameters", "X-Y jog acceleration"),
     QT_TRANSLATE_NOOP("Parameters", "X-Y jog speed"),
     QT_TRANSLATE_NOOP("Parameters", "X-Y speed of non-cutting moves"),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is not a barrel type: allowed fixed tilt, round or oval"),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is not a number"),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is not a text"),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is not allowed: above 0 and below 1"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is outside the allowed range: %2 to %3 %4"),
+    QT_TRANSLATE_NOOP("RuleText", "%1 is outside the allowed range: empty, or %2 to %3 %4"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "%1 leaves nothing to cut (the head as wide as the belly): allowed below 1"
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "%1 mm would make the head %2 mm wide: allowed %3 mm or more"),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°",
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "A board of %1 mm does not fit a barrel of %2 mm"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "A board of %1 mm is narrower than the stave it should become, %2 mm"
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "A board of %1 mm is outside the widths this machine takes: up to %2 mm"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "A drawn profile needs a drawing: import a DXF file"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "A round or oval barrel needs its belly diameter: allowed %1 to %2 mm"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "An oval barrel needs its short axis"),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText",
+        "At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°",
+    ),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "Only a drawn side profile keeps a drawing"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "The drawing's file is not recorded: import the DXF file again"),
+    QT_TRANSLATE_NOOP("RuleText", "The head would be %1 mm wide: allowed %2 mm or more"),
+    QT_TRANSLATE_NOOP("RuleText", "The name contains a control character"),
+    QT_TRANSLATE_NOOP("RuleText", "The name is empty: allowed 1 to %1 characters"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "The name must have 1 to %1 characters, with no space at its start or end"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "The note has %1 characters: allowed at most %2"),
+    QT_TRANSLATE_NOOP(
+        "RuleText", "The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3"
+    ),
+    QT_TRANSLATE_NOOP("RuleText", "This side profile has no parameters"),
+    QT_TRANSLATE_NOOP("RuleText", "This side profile has no such parameter"),
 ]

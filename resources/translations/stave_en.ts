@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+65" />
+        <location filename="../../app/screens/texts.py" line="+70" />
         <location line="+8" />
         <source>normal</source>
         <translation>normal</translation>
@@ -2061,7 +2061,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+281" />
+        <location filename="../../app/screens/main_screen.py" line="+282" />
         <source>Main</source>
         <translation>Main</translation>
     </message>
@@ -2138,12 +2138,12 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+170" />
+        <location line="+169" />
         <source>Last width</source>
         <translation>Last width</translation>
     </message>
     <message>
-        <location line="-169" />
+        <location line="-168" />
         <source>Last cycle</source>
         <translation>Last cycle</translation>
     </message>
@@ -2183,12 +2183,7 @@ shift</translation>
         <translation>There are no recipes yet: create one on Recipes.</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>Choose a recipe</source>
-        <translation>Choose a recipe</translation>
-    </message>
-    <message>
-        <location line="+13" />
+        <location line="+27" />
         <source>Resume the cut</source>
         <translation>Resume the cut</translation>
     </message>
@@ -3057,15 +3052,76 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>RecipeChooser</name>
+    <message>
+        <location filename="../../app/screens/recipe_chooser.py" line="+52" />
+        <source>Choose a recipe</source>
+        <translation>Choose a recipe</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>No recipe matches.</source>
+        <translation>No recipe matches.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 of %2 recipes</source>
+        <translation>%1 of %2 recipes</translation>
+    </message>
+</context>
+<context>
+    <name>RecipeFilterBar</name>
+    <message>
+        <location filename="../../app/screens/recipe_filter.py" line="+114" />
+        <source>All</source>
+        <translation>All</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fixed</source>
+        <translation>Fixed</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Round</source>
+        <translation>Round</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Oval</source>
+        <translation>Oval</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Show recipes of barrel type</source>
+        <translation>Show recipes of barrel type</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Search recipes by name or number</source>
+        <translation>Search recipes by name or number</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Search…</source>
+        <translation>Search…</translation>
+    </message>
+</context>
+<context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+360" />
-        <location line="+77" />
+        <location filename="../../app/screens/recipes_screen.py" line="+378" />
+        <location line="+110" />
         <source>Recipes</source>
         <translation>Recipes</translation>
     </message>
     <message>
-        <location line="-73" />
+        <location line="-106" />
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -3110,13 +3166,12 @@ shift</translation>
         <translation>Drawing (DXF)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+82" />
+        <location line="+117" />
         <source>Tilt</source>
         <translation>Tilt</translation>
     </message>
     <message>
-        <location line="-81" />
+        <location line="-115" />
         <source>Tilt α</source>
         <translation>Tilt α</translation>
     </message>
@@ -3146,7 +3201,7 @@ shift</translation>
         <translation>Note</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+41" />
         <source>(optional)</source>
         <translation>(optional)</translation>
     </message>
@@ -3156,12 +3211,7 @@ shift</translation>
         <translation>0 to below 1/2</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>above 0, below 1</source>
-        <translation>above 0, below 1</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+6" />
         <source>1 to %1 characters</source>
         <translation>1 to %1 characters</translation>
     </message>
@@ -3171,12 +3221,7 @@ shift</translation>
         <translation>optional</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>fixed, or from the barrel</source>
-        <translation>fixed, or from the barrel</translation>
-    </message>
-    <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>the shape of both sides</source>
         <translation>the shape of both sides</translation>
     </message>
@@ -3186,7 +3231,7 @@ shift</translation>
         <translation>one side, head to head; scaled to L and W</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+20" />
         <source>Line–arc–line</source>
         <translation>Line–arc–line</translation>
     </message>
@@ -3216,7 +3261,7 @@ shift</translation>
         <translation>Drawn (DXF)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>New</source>
         <translation>New</translation>
     </message>
@@ -3227,18 +3272,18 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+571" />
+        <location line="+641" />
         <source>Delete</source>
         <translation>Delete</translation>
     </message>
     <message>
-        <location line="-570" />
-        <location line="+620" />
+        <location line="-640" />
+        <location line="+690" />
         <source>Import</source>
         <translation>Import</translation>
     </message>
     <message>
-        <location line="-619" />
+        <location line="-689" />
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -3249,38 +3294,28 @@ shift</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+128" />
+        <location line="+140" />
         <source>Discard</source>
         <translation>Discard</translation>
     </message>
     <message>
-        <location line="-127" />
+        <location line="-139" />
         <source>Use on machine</source>
         <translation>Use on machine</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Fixed</source>
-        <translation>Fixed</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Barrel</source>
-        <translation>Barrel</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>Preview</source>
         <translation>Preview</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+378" />
+        <location line="+447" />
         <source>Board width for the preview</source>
         <translation>Board width for the preview</translation>
     </message>
     <message>
-        <location line="-377" />
+        <location line="-446" />
         <source>G-code, DXF…</source>
         <translation>G-code, DXF…</translation>
     </message>
@@ -3300,7 +3335,12 @@ shift</translation>
         <translation>Radius R</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+19" />
+        <source>%1 of %2 recipes</source>
+        <translation>%1 of %2 recipes</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>%1 to %2 mm</source>
         <translation>%1 to %2 mm</translation>
     </message>
@@ -3310,7 +3350,12 @@ shift</translation>
         <translation>cuts no board here</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+3" />
+        <source>on the machine, %1</source>
+        <translation>on the machine, %1</translation>
+    </message>
+    <message>
+        <location line="+63" />
         <source>Unsaved changes</source>
         <translation>Unsaved changes</translation>
     </message>
@@ -3347,12 +3392,12 @@ shift</translation>
     </message>
     <message>
         <location line="+8" />
-        <location line="+198" />
+        <location line="+256" />
         <source>New recipe</source>
         <translation>New recipe</translation>
     </message>
     <message>
-        <location line="-196" />
+        <location line="-254" />
         <source>Recipe %1</source>
         <translation>Recipe %1</translation>
     </message>
@@ -3367,7 +3412,12 @@ shift</translation>
         <translation>Import a DXF file…</translation>
     </message>
     <message>
-        <location line="+86" />
+        <location line="+72" />
+        <source>from the barrel, for a %1 mm board</source>
+        <translation>from the barrel, for a %1 mm board</translation>
+    </message>
+    <message>
+        <location line="+71" />
         <source>This recipe cuts no board on this machine</source>
         <translation>This recipe cuts no board on this machine</translation>
     </message>
@@ -3382,7 +3432,7 @@ shift</translation>
         <translation>Outside the widths this recipe cuts on this machine</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Not saved</source>
         <translation>Not saved</translation>
     </message>
@@ -3480,7 +3530,37 @@ shift</translation>
         <translation>Not deleted</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-757" />
+        <source>Barrel type</source>
+        <translation>Barrel type</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>%1 to below 1</source>
+        <translation>%1 to below 1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>the tilt: fixed, or from the barrel</source>
+        <translation>the tilt: fixed, or from the barrel</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Fixed tilt</source>
+        <translation>Fixed tilt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Round</source>
+        <translation>Round</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Oval</source>
+        <translation>Oval</translation>
+    </message>
+    <message>
+        <location line="+688" />
         <source>Recipe %1 deleted.</source>
         <translation>Recipe %1 deleted.</translation>
     </message>
@@ -3500,7 +3580,22 @@ shift</translation>
         <translation>… and %1 more lines</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
+        <source>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</source>
+        <translation>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>row %1 (%2)</source>
+        <translation>row %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>row %1</source>
+        <translation>row %1</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>Export recipes</source>
         <translation>Export recipes</translation>
     </message>
@@ -3585,6 +3680,189 @@ shift</translation>
     </message>
 </context>
 <context>
+    <name>RuleText</name>
+    <message>
+        <location line="-49" />
+        <source>This value is not allowed</source>
+        <translation>This value is not allowed</translation>
+    </message>
+    <message>
+        <location filename="catalogue_strings.py" line="+1" />
+        <source>%1 is not a barrel type: allowed fixed tilt, round or oval</source>
+        <translation>%1 is not a barrel type: allowed fixed tilt, round or oval</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a number</source>
+        <translation>%1 is not a number</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a text</source>
+        <translation>%1 is not a text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not allowed: above 0 and below 1</source>
+        <translation>%1 is not allowed: above 0 and below 1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</source>
+        <translation>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is outside the allowed range: %2 to %3 %4</source>
+        <translation>%1 is outside the allowed range: %2 to %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is outside the allowed range: empty, or %2 to %3 %4</source>
+        <translation>%1 is outside the allowed range: empty, or %2 to %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</source>
+        <translation>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</source>
+        <translation>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</source>
+        <translation>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</source>
+        <translation>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 mm would make the head %2 mm wide: allowed %3 mm or more</source>
+        <translation>%1 mm would make the head %2 mm wide: allowed %3 mm or more</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</source>
+        <translation>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A board of %1 mm does not fit a barrel of %2 mm</source>
+        <translation>A board of %1 mm does not fit a barrel of %2 mm</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A board of %1 mm is narrower than the stave it should become, %2 mm</source>
+        <translation>A board of %1 mm is narrower than the stave it should become, %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A board of %1 mm is outside the widths this machine takes: up to %2 mm</source>
+        <translation>A board of %1 mm is outside the widths this machine takes: up to %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A drawn profile needs a drawing: import a DXF file</source>
+        <translation>A drawn profile needs a drawing: import a DXF file</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</source>
+        <translation>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>An oval barrel needs its short axis</source>
+        <translation>An oval barrel needs its short axis</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</source>
+        <translation>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</source>
+        <translation>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</source>
+        <translation>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Only a drawn side profile keeps a drawing</source>
+        <translation>Only a drawn side profile keeps a drawing</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</source>
+        <translation>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The drawing's file is not recorded: import the DXF file again</source>
+        <translation>The drawing's file is not recorded: import the DXF file again</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The head would be %1 mm wide: allowed %2 mm or more</source>
+        <translation>The head would be %1 mm wide: allowed %2 mm or more</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name contains a control character</source>
+        <translation>The name contains a control character</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name is empty: allowed 1 to %1 characters</source>
+        <translation>The name is empty: allowed 1 to %1 characters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The name must have 1 to %1 characters, with no space at its start or end</source>
+        <translation>The name must have 1 to %1 characters, with no space at its start or end</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The note has %1 characters: allowed at most %2</source>
+        <translation>The note has %1 characters: allowed at most %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</source>
+        <translation>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>This side profile has no parameters</source>
+        <translation>This side profile has no parameters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>This side profile has no such parameter</source>
+        <translation>This side profile has no such parameter</translation>
+    </message>
+</context>
+<context>
     <name>SimPendantPanel</name>
     <message>
         <location filename="../../app/screens/widgets/sim_pendant.py" line="+168" />
@@ -3625,7 +3903,7 @@ shift</translation>
 <context>
     <name>States</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="-44" />
+        <location filename="../../app/screens/texts.py" line="+5" />
         <source>STARTING UP</source>
         <translation>STARTING UP</translation>
     </message>
@@ -3960,7 +4238,7 @@ Log in as technician or service to change them.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+120" />
+        <location filename="../../app/screens/widgets/keyboard.py" line="+122" />
         <source>Space</source>
         <translation>Space</translation>
     </message>

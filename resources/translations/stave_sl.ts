@@ -52,7 +52,7 @@
 <context>
     <name>AlarmStates</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="+65"/>
+        <location filename="../../app/screens/texts.py" line="+70"/>
         <location line="+8"/>
         <source>normal</source>
         <translation>normalno</translation>
@@ -2061,7 +2061,7 @@
 <context>
     <name>MainScreen</name>
     <message>
-        <location filename="../../app/screens/main_screen.py" line="+281"/>
+        <location filename="../../app/screens/main_screen.py" line="+282"/>
         <source>Main</source>
         <translation>Glavni</translation>
     </message>
@@ -2138,12 +2138,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+170"/>
+        <location line="+169"/>
         <source>Last width</source>
         <translation>Zadnja širina</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-168"/>
         <source>Last cycle</source>
         <translation>Zadnji cikel</translation>
     </message>
@@ -2183,12 +2183,7 @@ izmena</translation>
         <translation>Receptov še ni: ustvarite ga na zaslonu Recepti.</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Choose a recipe</source>
-        <translation>Izberite recept</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+27"/>
         <source>Resume the cut</source>
         <translation>Nadaljuj rezanje</translation>
     </message>
@@ -3057,15 +3052,76 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>RecipeChooser</name>
+    <message>
+        <location filename="../../app/screens/recipe_chooser.py" line="+52"/>
+        <source>Choose a recipe</source>
+        <translation>Izberite recept</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cancel</source>
+        <translation>Prekliči</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>No recipe matches.</source>
+        <translation>Noben recept ne ustreza.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 of %2 recipes</source>
+        <translation>%1 od %2 receptov</translation>
+    </message>
+</context>
+<context>
+    <name>RecipeFilterBar</name>
+    <message>
+        <location filename="../../app/screens/recipe_filter.py" line="+114"/>
+        <source>All</source>
+        <translation>Vsi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fixed</source>
+        <translation>Stalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Round</source>
+        <translation>Okrogel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Oval</source>
+        <translation>Ovalen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Show recipes of barrel type</source>
+        <translation>Prikaži recepte za vrsto soda</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Search recipes by name or number</source>
+        <translation>Iskanje receptov po imenu ali številki</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Search…</source>
+        <translation>Iskanje…</translation>
+    </message>
+</context>
+<context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+360"/>
-        <location line="+77"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+378"/>
+        <location line="+110"/>
         <source>Recipes</source>
         <translation>Recepti</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-106"/>
         <source>Name</source>
         <translation>Ime</translation>
     </message>
@@ -3110,13 +3166,12 @@ izmena</translation>
         <translation>Risba (DXF)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+82"/>
+        <location line="+117"/>
         <source>Tilt</source>
         <translation>Nagib</translation>
     </message>
     <message>
-        <location line="-81"/>
+        <location line="-115"/>
         <source>Tilt α</source>
         <translation>Nagib α</translation>
     </message>
@@ -3146,7 +3201,7 @@ izmena</translation>
         <translation>Opomba</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+41"/>
         <source>(optional)</source>
         <translation>(neobvezno)</translation>
     </message>
@@ -3156,12 +3211,7 @@ izmena</translation>
         <translation>od 0 do manj kot 1/2</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>above 0, below 1</source>
-        <translation>več kot 0, manj kot 1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>1 to %1 characters</source>
         <translation>od 1 do %1 znakov</translation>
     </message>
@@ -3171,12 +3221,7 @@ izmena</translation>
         <translation>neobvezno</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>fixed, or from the barrel</source>
-        <translation>stalen ali iz soda</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>the shape of both sides</source>
         <translation>oblika obeh stranic</translation>
     </message>
@@ -3186,7 +3231,7 @@ izmena</translation>
         <translation>ena stranica, od glave do glave; prilagojena L in W</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+20"/>
         <source>Line–arc–line</source>
         <translation>Premica–lok–premica</translation>
     </message>
@@ -3216,7 +3261,7 @@ izmena</translation>
         <translation>Narisan (DXF)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>New</source>
         <translation>Nov</translation>
     </message>
@@ -3227,18 +3272,18 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+571"/>
+        <location line="+641"/>
         <source>Delete</source>
         <translation>Izbriši</translation>
     </message>
     <message>
-        <location line="-570"/>
-        <location line="+620"/>
+        <location line="-640"/>
+        <location line="+690"/>
         <source>Import</source>
         <translation>Uvozi</translation>
     </message>
     <message>
-        <location line="-619"/>
+        <location line="-689"/>
         <source>Export</source>
         <translation>Izvozi</translation>
     </message>
@@ -3249,38 +3294,28 @@ izmena</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+128"/>
+        <location line="+140"/>
         <source>Discard</source>
         <translation>Zavrzi</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-139"/>
         <source>Use on machine</source>
         <translation>Uporabi na stroju</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Fixed</source>
-        <translation>Stalen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Barrel</source>
-        <translation>Iz soda</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Preview</source>
         <translation>Predogled</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+378"/>
+        <location line="+447"/>
         <source>Board width for the preview</source>
         <translation>Širina deske za predogled</translation>
     </message>
     <message>
-        <location line="-377"/>
+        <location line="-446"/>
         <source>G-code, DXF…</source>
         <translation>G-koda, DXF…</translation>
     </message>
@@ -3300,7 +3335,12 @@ izmena</translation>
         <translation>Polmer R</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+19"/>
+        <source>%1 of %2 recipes</source>
+        <translation>%1 od %2 receptov</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>%1 to %2 mm</source>
         <translation>%1 do %2 mm</translation>
     </message>
@@ -3310,7 +3350,12 @@ izmena</translation>
         <translation>tu ne reže nobene deske</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+3"/>
+        <source>on the machine, %1</source>
+        <translation>na stroju, %1</translation>
+    </message>
+    <message>
+        <location line="+63"/>
         <source>Unsaved changes</source>
         <translation>Neshranjene spremembe</translation>
     </message>
@@ -3347,12 +3392,12 @@ izmena</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+198"/>
+        <location line="+256"/>
         <source>New recipe</source>
         <translation>Nov recept</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-254"/>
         <source>Recipe %1</source>
         <translation>Recept %1</translation>
     </message>
@@ -3367,7 +3412,12 @@ izmena</translation>
         <translation>Uvozi datoteko DXF…</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+72"/>
+        <source>from the barrel, for a %1 mm board</source>
+        <translation>iz soda, za desko %1 mm</translation>
+    </message>
+    <message>
+        <location line="+71"/>
         <source>This recipe cuts no board on this machine</source>
         <translation>Ta recept na tem stroju ne reže nobene deske</translation>
     </message>
@@ -3382,7 +3432,7 @@ izmena</translation>
         <translation>Zunaj širin, ki jih ta recept reže na tem stroju</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Not saved</source>
         <translation>Ni shranjeno</translation>
     </message>
@@ -3480,7 +3530,37 @@ izmena</translation>
         <translation>Ni izbrisano</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-757"/>
+        <source>Barrel type</source>
+        <translation>Vrsta soda</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>%1 to below 1</source>
+        <translation>od %1 do manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the tilt: fixed, or from the barrel</source>
+        <translation>nagib: stalen ali iz soda</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Fixed tilt</source>
+        <translation>Stalen nagib</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Round</source>
+        <translation>Okrogel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Oval</source>
+        <translation>Ovalen</translation>
+    </message>
+    <message>
+        <location line="+688"/>
         <source>Recipe %1 deleted.</source>
         <translation>Recept %1 je izbrisan.</translation>
     </message>
@@ -3500,7 +3580,22 @@ izmena</translation>
         <translation>… in še %1 vrstic</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>%1: %2 accepted (%3 new, %4 updated, %5 unchanged), %6 rejected</source>
+        <translation>%1: sprejetih %2 (%3 novih, %4 posodobljenih, %5 nespremenjenih), zavrnjenih %6</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>row %1 (%2)</source>
+        <translation>vrstica %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>row %1</source>
+        <translation>vrstica %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Export recipes</source>
         <translation>Izvoz receptov</translation>
     </message>
@@ -3585,6 +3680,189 @@ izmena</translation>
     </message>
 </context>
 <context>
+    <name>RuleText</name>
+    <message>
+        <location line="-49"/>
+        <source>This value is not allowed</source>
+        <translation>Ta vrednost ni dovoljena</translation>
+    </message>
+    <message>
+        <location filename="catalogue_strings.py" line="+1"/>
+        <source>%1 is not a barrel type: allowed fixed tilt, round or oval</source>
+        <translation>%1 ni vrsta soda: dovoljeno stalen nagib, okrogel ali ovalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a number</source>
+        <translation>%1 ni število</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a text</source>
+        <translation>%1 ni besedilo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not allowed: above 0 and below 1</source>
+        <translation>%1 ni dovoljeno: več kot 0 in manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not allowed: from 0 to below 1/2 (at 1/2 or more no arc is left)</source>
+        <translation>%1 ni dovoljeno: od 0 do manj kot 1/2 (pri 1/2 ali več ne ostane noben lok)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is outside the allowed range: %2 to %3 %4</source>
+        <translation>%1 je zunaj dovoljenega območja: od %2 do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is outside the allowed range: empty, or %2 to %3 %4</source>
+        <translation>%1 je zunaj dovoljenega območja: prazno ali od %2 do %3 %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 leaves nothing to cut (the head as wide as the belly): allowed below 1</source>
+        <translation>%1 ne pusti ničesar za rezanje (glava je široka kot trebuh): dovoljeno manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 makes the head narrower than %2 mm even on a board of %3 mm: allowed %4 to below 1</source>
+        <translation>%1 naredi glavo ožjo od %2 mm celo na deski %3 mm: dovoljeno od %4 do manj kot 1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm fits no board of this recipe: boards of %2 to %3 mm need a tilt of %4 to %5°</source>
+        <translation>%1 mm ne ustreza nobeni deski tega recepta: deske od %2 do %3 mm potrebujejo nagib od %4 do %5°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm has no use with a fixed tilt: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm nima pomena pri stalnem nagibu: pustite kratko os prazno ali izberite ovalen sod</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm has no use with a round barrel: leave the short axis empty, or choose an oval barrel</source>
+        <translation>%1 mm nima pomena pri okroglem sodu: pustite kratko os prazno ali izberite ovalen sod</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 mm is not allowed: the short axis is %2 mm up to the long axis, %3 mm</source>
+        <translation>%1 mm ni dovoljeno: kratka os meri od %2 mm do dolge osi, %3 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 mm would make the head %2 mm wide: allowed %3 mm or more</source>
+        <translation>pri %1 mm bi bila glava široka %2 mm: dovoljeno %3 mm ali več</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1° fits no barrel of %2 to %3 mm for the boards of this recipe: allowed %4 to %5°</source>
+        <translation>%1° pri deskah tega recepta ne ustreza nobenemu sodu od %2 do %3 mm: dovoljeno od %4 do %5°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A board of %1 mm does not fit a barrel of %2 mm</source>
+        <translation>Deska %1 mm ne ustreza sodu %2 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A board of %1 mm is narrower than the stave it should become, %2 mm</source>
+        <translation>Deska %1 mm je ožja od doge, ki naj bi iz nje nastala, %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A board of %1 mm is outside the widths this machine takes: up to %2 mm</source>
+        <translation>Deska %1 mm je zunaj širin, ki jih stroj sprejme: do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A drawn profile needs a drawing: import a DXF file</source>
+        <translation>Narisan profil potrebuje risbo: uvozite datoteko DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A round or oval barrel needs its belly diameter: allowed %1 to %2 mm</source>
+        <translation>Okrogel ali ovalen sod potrebuje premer trebuha: dovoljeno od %1 do %2 mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>An oval barrel needs its short axis</source>
+        <translation>Ovalen sod potrebuje kratko os</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At %1° a board of %2 mm belongs to a barrel of %3 mm, outside %4 to %5 mm: allowed %6 to %7°</source>
+        <translation>Pri %1° deska %2 mm pripada sodu %3 mm, zunaj območja od %4 do %5 mm: dovoljeno od %6 do %7°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>At %1° the bevels of a %2 mm thick stave meet before the top face at the %3 mm wide heads: allowed below %4°</source>
+        <translation>Pri %1° se poševnini %2 mm debele doge stakneta pred zgornjo ploskvijo na %3 mm širokih glavah: dovoljeno manj kot %4°</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No tilt fits a board of %1 mm: no barrel of %2 to %3 mm has such staves</source>
+        <translation>Deski %1 mm ne ustreza noben nagib: noben sod od %2 do %3 mm nima takih dog</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Only a drawn side profile keeps a drawing</source>
+        <translation>Risbo ima le narisan stranski profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The barrel gives a board of %1 mm a tilt of %2°: allowed %3 to %4°</source>
+        <translation>Sod da deski %1 mm nagib %2°: dovoljeno od %3 do %4°</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The drawing&apos;s file is not recorded: import the DXF file again</source>
+        <translation>Datoteka risbe ni zabeležena: ponovno uvozite datoteko DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The head would be %1 mm wide: allowed %2 mm or more</source>
+        <translation>Glava bi bila široka %1 mm: dovoljeno %2 mm ali več</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name contains a control character</source>
+        <translation>Ime vsebuje krmilni znak</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name is empty: allowed 1 to %1 characters</source>
+        <translation>Ime je prazno: dovoljeno od 1 do %1 znakov</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The name must have 1 to %1 characters, with no space at its start or end</source>
+        <translation>Ime mora imeti od 1 do %1 znakov, brez presledka na začetku ali koncu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The note has %1 characters: allowed at most %2</source>
+        <translation>Opomba ima %1 znakov: dovoljeno največ %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The tool path reaches %1 = %2 %3, beyond the axis travel %4 to %5 %3</source>
+        <translation>Pot orodja doseže %1 = %2 %3, zunaj hoda osi od %4 do %5 %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>This side profile has no parameters</source>
+        <translation>Ta stranski profil nima parametrov</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This side profile has no such parameter</source>
+        <translation>Ta stranski profil nima takega parametra</translation>
+    </message>
+</context>
+<context>
     <name>SimPendantPanel</name>
     <message>
         <location filename="../../app/screens/widgets/sim_pendant.py" line="+168"/>
@@ -3625,7 +3903,7 @@ izmena</translation>
 <context>
     <name>States</name>
     <message>
-        <location filename="../../app/screens/texts.py" line="-44"/>
+        <location filename="../../app/screens/texts.py" line="+5"/>
         <source>STARTING UP</source>
         <translation>ZAGANJANJE</translation>
     </message>
@@ -3960,7 +4238,7 @@ Za spremembe se prijavite kot tehnik ali servis.</translation>
 <context>
     <name>TextKeyboard</name>
     <message>
-        <location filename="../../app/screens/widgets/keyboard.py" line="+120"/>
+        <location filename="../../app/screens/widgets/keyboard.py" line="+122"/>
         <source>Space</source>
         <translation>Presledek</translation>
     </message>

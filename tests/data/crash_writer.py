@@ -27,7 +27,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 
 from app.data.database import Database
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import BarrelType, Recipe
 from app.data.records import AlarmEvent, AlarmState, PieceResult, ProductionRecord
 from app.data.users import Role
 from app.geometry.ratio import Ratio
@@ -39,7 +39,7 @@ BASE = Recipe(
     thickness_mm=30.0,
     length_ratio=Ratio(1, 5),
     width_ratio=Ratio(4, 5),
-    tilt_mode=TiltMode.BARREL,
+    barrel_type=BarrelType.ROUND,
     tilt_deg=8.0,
     barrel_diameter_mm=760.0,
     barrel_perimeter_mm=None,

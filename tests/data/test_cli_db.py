@@ -37,6 +37,8 @@ def test_list_recipes_parameters_users(db_path: Path, capsys: pytest.CaptureFixt
     code, out, err = run(capsys, "list", "--db", str(db_path))
     assert (code, err) == (0, "")
     assert "Barrique 225 l Bordeaux" in out and "Foudre" in out
+    barrique = next(line for line in out.splitlines() if "Barrique" in line)
+    assert barrique.endswith("round barrel D 690 mm")  # the recipe's barrel type
     code, out, _ = run(capsys, "list", "parameters", "--db", str(db_path))
     assert code == 0 and "xy_speed_mm_s" in out and "mm/s" in out
     code, out, _ = run(capsys, "list", "users", "--db", str(db_path))

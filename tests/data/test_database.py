@@ -25,7 +25,7 @@ from app.data.errors import (
 )
 from app.data.paths import DATABASE_PATH_ENV
 from app.data.pending import AlarmWrite, decode_write, encode_write
-from app.data.recipe import Recipe, TiltMode, recipe_from_mapping
+from app.data.recipe import BarrelType, Recipe, recipe_from_mapping
 from app.data.recipe_files import load_recipe_file
 from app.data.records import (
     AlarmEvent,
@@ -183,6 +183,38 @@ def test_forward_migration_keeps_the_data(tmp_path: Path) -> None:
         users = {u.role: u for u in database.list_users()}
         assert users == {}  # v1 files made by older software had their own users
         assert database.recipe_history() == []  # the v2 table exists and works
+
+
+def test_migration_10_states_the_barrel_type_each_recipe_meant(tmp_path: Path) -> None:
+    """Before version 12 round or oval was guessed from the short axis; the migration writes
+    down what each recipe meant, and the type is then the recipe's own choice."""
+    path = tmp_path / "v9.db"
+    conn = sqlite3.connect(path, isolation_level=None)
+    conn.execute("BEGIN")
+    apply_migrations(conn, 0, 9)
+    for name, mode, major, minor in (
+        ("Fixed", "fixed", None, None),
+        ("Round", "barrel", 700.0, None),
+        ("Oval", "barrel", 700.0, 500.0),
+    ):
+        conn.execute(
+            "INSERT INTO recipes (name, length_mm, thickness_mm, length_ratio_num, "
+            "length_ratio_den, width_ratio_num, width_ratio_den, tilt_mode, tilt_deg, "
+            "barrel_diameter_mm, barrel_minor_diameter_mm, created_at, created_by, updated_at, "
+            "updated_by) VALUES (?, 1000, 30, 1, 4, 3, 4, ?, 8, ?, ?, 't', 'u', 't', 'u')",
+            (name, mode, major, minor),
+        )
+    conn.execute("COMMIT")
+    conn.close()
+    with Database.open(path) as database:
+        types = {r.name: r.barrel_type for r in database.list_recipes()}
+    assert types == {
+        "Fixed": BarrelType.FIXED_TILT,
+        "Round": BarrelType.ROUND,
+        "Oval": BarrelType.OVAL,
+    }
+    with sqlite3.connect(path) as conn, pytest.raises(sqlite3.IntegrityError):
+        conn.execute("UPDATE recipes SET barrel_type = 'egg'")
 
 
 # ----------------------------------------------------------------------------- recipes
@@ -523,7 +555,7 @@ def test_recipe_edit_roles(db: Database, users: dict[Role, User]) -> None:
 def test_barrel_mode_recipes_round_trip(db: Database, users: dict[Role, User]) -> None:
     recipe = make_recipe(
         name="Oval-ish",
-        tilt_mode=TiltMode.BARREL,
+        barrel_type=BarrelType.ROUND,
         barrel_diameter_mm=850.0,
         barrel_perimeter_mm=2700.0,
         note="für Export, «spécial»",

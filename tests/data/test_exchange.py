@@ -23,7 +23,7 @@ from app.data.exchange import (
     import_recipes,
     read_recipes,
 )
-from app.data.recipe import ROW_KEYS, TiltMode
+from app.data.recipe import ROW_KEYS, BarrelType, TiltMode
 from app.data.recipe_files import RecipeFileError
 from app.data.records import PieceResult, ProductionRecord
 from app.data.shifts import ShiftPlan, current_shift, day_window, shift_window
@@ -87,11 +87,55 @@ def test_the_csv_export_format(db: Database, tmp_path: Path) -> None:
     export_recipes(db, path)
     rows = list(csv.DictReader(io.StringIO(path.read_text(encoding="utf-8"))))
     assert tuple(rows[0]) == ROW_KEYS
-    assert (rows[0]["length_mm"], rows[0]["width_ratio"], rows[0]["tilt_mode"]) == (
+    assert (rows[0]["length_mm"], rows[0]["width_ratio"], rows[0]["barrel_type"]) == (
         "950",
         "4/5",
-        "barrel",
+        "round",
     )
+
+
+def test_an_older_file_with_tilt_mode_imports_round_and_oval_barrels(
+    empty_db: Database, tmp_path: Path
+) -> None:
+    """Files written before the barrel type: a barrel with a short axis was an oval one."""
+    service = {u.role: u for u in empty_db.list_users()}[Role.SERVICE]
+    path = write(
+        tmp_path / "old.csv",
+        f"{HEADER},tilt_mode,barrel_diameter_mm,barrel_minor_diameter_mm\n"
+        "Round,1000,28,1/5,4/5,8,barrel,700,\n"
+        "Oval,1000,28,1/5,4/5,8,barrel,700,500\n"
+        "Fixed,1000,28,1/5,4/5,8,fixed,,\n",
+    )
+    report = import_recipes(empty_db, path, service)
+    assert report.created == ("Round", "Oval", "Fixed")
+    types = {r.name: r.barrel_type for r in empty_db.list_recipes()}
+    assert types == {
+        "Round": BarrelType.ROUND,
+        "Oval": BarrelType.OVAL,
+        "Fixed": BarrelType.FIXED_TILT,
+    }
+    out = tmp_path / "new.json"
+    export_recipes(empty_db, out)
+    again = write(tmp_path / "again.json", out.read_text(encoding="utf-8"))
+    fresh = tmp_path / "fresh.db"
+    with Database.open(fresh, load_samples=False) as other:
+        import_recipes(other, again, {u.role: u for u in other.list_users()}[Role.SERVICE])
+        assert {r.name: r.barrel_type for r in other.list_recipes()} == types
+
+
+def test_a_bad_barrel_type_is_refused_naming_the_choices(
+    empty_db: Database, tmp_path: Path
+) -> None:
+    service = {u.role: u for u in empty_db.list_users()}[Role.SERVICE]
+    path = write(
+        tmp_path / "bad.csv",
+        f"{HEADER},barrel_type,barrel_diameter_mm\nX,1000,28,1/5,4/5,8,egg,700\n",
+    )
+    report = import_recipes(empty_db, path, service)
+    [row] = report.rejected
+    assert [e.message for e in row.errors] == [
+        "barrel_type = 'egg' is unknown: allowed fixed, round or oval"
+    ]
 
 
 def test_a_report_names_each_rejected_row_field_and_reason(

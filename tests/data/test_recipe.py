@@ -15,6 +15,7 @@ from app.data.errors import RecipeFormatError
 from app.data.recipe import (
     NAME_MAX_CHARS,
     ROW_KEYS,
+    BarrelType,
     Recipe,
     TiltMode,
     recipe_from_mapping,
@@ -37,7 +38,7 @@ def make_recipe(**changes: object) -> Recipe:
         thickness_mm=27.0,
         length_ratio=Ratio(1, 4),
         width_ratio=Ratio(4, 5),
-        tilt_mode=TiltMode.FIXED,
+        barrel_type=BarrelType.FIXED_TILT,
         tilt_deg=9.0,
         barrel_diameter_mm=None,
         barrel_perimeter_mm=None,
@@ -57,7 +58,7 @@ def fields(recipe: Recipe, limits: StaveLimits | None = None) -> set[str]:
 
 def test_a_valid_recipe_has_no_errors() -> None:
     assert make_recipe().validate() == []
-    assert make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=690.0).validate() == []
+    assert make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=690.0).validate() == []
 
 
 def test_ratio_decimals_are_derived_from_the_fractions() -> None:
@@ -86,8 +87,8 @@ def test_ratio_decimals_are_derived_from_the_fractions() -> None:
         ({"name": "x" * (NAME_MAX_CHARS + 1)}, "name"),
         ({"name": "line\nbreak"}, "name"),
         ({"note": "n" * 501}, "note"),
-        ({"tilt_mode": TiltMode.BARREL}, "barrel_diameter_mm"),  # barrel mode needs it
-        ({"tilt_mode": "round"}, "tilt_mode"),
+        ({"barrel_type": BarrelType.ROUND}, "barrel_diameter_mm"),  # a barrel needs it
+        ({"barrel_type": "square"}, "barrel_type"),
         ({"barrel_diameter_mm": 239.0}, "barrel_diameter_mm"),
         ({"barrel_diameter_mm": 4501.0}, "barrel_diameter_mm"),
         ({"barrel_perimeter_mm": 100.0}, "barrel_perimeter_mm"),
@@ -115,7 +116,7 @@ def test_the_name_limit_is_inclusive() -> None:
 def test_a_barrel_too_small_for_any_board_of_the_recipe_is_refused() -> None:
     # k = 4/5: boards from 75 mm; with tilt at most 10 deg, W <= 240 * sin 10 = 41.7 mm.
     limits = replace(DEFAULT_LIMITS, max_tilt_deg=10.0)
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=240.0, tilt_deg=9.0)
+    recipe = make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=240.0, tilt_deg=9.0)
     assert "barrel_diameter_mm" in fields(recipe, limits)
     assert "barrel_diameter_mm" not in fields(replace(recipe, barrel_diameter_mm=690.0), limits)
 
@@ -130,18 +131,18 @@ def test_fixed_mode_uses_the_recipe_tilt_for_every_width() -> None:
 
 
 def test_barrel_mode_bevels_each_board_for_the_barrel() -> None:
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=690.0)
+    recipe = make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=690.0)
     assert recipe.tilt_rule == RoundBarrelTilt(690.0)
     assert tilt_for_width(recipe, 110.0) == barrel_tilt_deg(110.0, 690.0, DEFAULT_LIMITS)
 
 
 def test_the_stave_the_geometry_cuts_carries_the_recipe() -> None:
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=690.0)
+    recipe = make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=690.0)
     assert recipe.stave == StaveSpec(950.0, 27.0, 0.25, 0.8, RoundBarrelTilt(690.0))
 
 
 def test_a_barrel_recipe_without_its_diameter_names_the_field_for_every_width() -> None:
-    recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=None)
+    recipe = make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=None)
     with pytest.raises(GeometryError) as caught:
         tilt_for_width(recipe, 150.0)
     assert caught.value.fields == ("barrel_diameter_mm",)
@@ -164,10 +165,11 @@ def good_row(**changes: object) -> dict[str, object]:
 
 
 def test_a_row_of_text_is_read() -> None:
-    recipe = recipe_from_mapping(good_row(tilt_mode=" Barrel ", barrel_diameter_mm="690"))
+    recipe = recipe_from_mapping(good_row(barrel_type=" Round ", barrel_diameter_mm="690"))
     assert recipe.id is None
     assert recipe.length_mm == 950.0
     assert recipe.width_ratio == Ratio(4, 5)  # the decimal became the nearest fraction
+    assert recipe.barrel_type is BarrelType.ROUND
     assert recipe.tilt_mode is TiltMode.BARREL
     assert recipe.barrel_diameter_mm == 690.0
     assert recipe.barrel_perimeter_mm is None  # optional, absent
@@ -182,7 +184,8 @@ def test_a_json_row_with_numbers_is_read() -> None:
         Ratio(1, 4),
         Ratio(3, 4),
     )
-    assert recipe.tilt_mode is TiltMode.FIXED  # the default
+    assert recipe.barrel_type is BarrelType.FIXED_TILT  # the default
+    assert recipe.tilt_mode is TiltMode.FIXED
 
 
 @pytest.mark.parametrize(
@@ -197,6 +200,9 @@ def test_a_json_row_with_numbers_is_read() -> None:
         ({"width_ratio": "-1/2"}, "width_ratio"),
         ({"width_ratio": [3, 4]}, "width_ratio"),
         ({"tilt_mode": "round"}, "tilt_mode"),
+        ({"barrel_type": "square"}, "barrel_type"),
+        ({"barrel_type": 3}, "barrel_type"),
+        ({"barrel_type": "oval", "tilt_mode": "fixed"}, "tilt_mode"),  # contradicting
         ({"barrel_diameter_mm": "wide"}, "barrel_diameter_mm"),
         ({"lenght_mm": "950"}, "lenght_mm"),  # a typo is an unknown key, not silently ignored
         ({"note": 5}, "note"),
@@ -235,7 +241,7 @@ finite = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False, allow_infinit
     numbers=st.tuples(finite, finite, finite),
     lam=st.tuples(st.integers(0, 10_000), st.integers(1, 10_000)),
     k=st.tuples(st.integers(0, 10_000), st.integers(1, 10_000)),
-    mode=st.sampled_from(TiltMode),
+    mode=st.sampled_from(BarrelType),
     diameter=st.none() | finite,
     note=st.text(max_size=50).map(str.strip),
 )
@@ -244,7 +250,7 @@ def test_mapping_round_trip(
     numbers: tuple[float, float, float],
     lam: tuple[int, int],
     k: tuple[int, int],
-    mode: TiltMode,
+    mode: BarrelType,
     diameter: float | None,
     note: str,
 ) -> None:
@@ -255,7 +261,7 @@ def test_mapping_round_trip(
         thickness_mm=numbers[1],
         length_ratio=Ratio(*lam),
         width_ratio=Ratio(*k),
-        tilt_mode=mode,
+        barrel_type=mode,
         tilt_deg=numbers[2],
         barrel_diameter_mm=diameter,
         barrel_perimeter_mm=None,
@@ -282,7 +288,7 @@ def test_the_sample_recipes_are_valid_and_inside_the_machine_limits() -> None:
             assert DEFAULT_LIMITS.min_tilt_deg < tilt < DEFAULT_LIMITS.max_tilt_deg
     lengths = sorted(recipe.length_mm for recipe in recipes)
     assert lengths[0] < 1000.0 and lengths[-1] >= 3000.0  # barriques to a big foudre
-    assert {TiltMode.FIXED, TiltMode.BARREL} == {recipe.tilt_mode for recipe in recipes}
+    assert {BarrelType.FIXED_TILT, BarrelType.ROUND} <= {recipe.barrel_type for recipe in recipes}
 
 
 def test_sample_fixed_tilts_match_their_barrel() -> None:
@@ -290,6 +296,6 @@ def test_sample_fixed_tilts_match_their_barrel() -> None:
     the tilts the barrel-mode computation gives for boards of 90..200 mm (foudre staves are the
     wide ones)."""
     for recipe in load_recipe_file(sample_recipes_path()):
-        barrel = replace(recipe, tilt_mode=TiltMode.BARREL)
+        barrel = replace(recipe, barrel_type=BarrelType.ROUND)
         low, high = tilt_for_width(barrel, 90.0), tilt_for_width(barrel, 200.0)
         assert low <= recipe.tilt_deg <= high, recipe.name

@@ -10,7 +10,7 @@ import pytest
 
 from app.data.database import Database
 from app.data.errors import RecipeFormatError
-from app.data.recipe import BarrelType, TiltMode, recipe_from_mapping, recipe_to_mapping
+from app.data.recipe import BarrelType, recipe_from_mapping, recipe_to_mapping
 from app.data.users import Role, User
 from app.geometry.barrel_section import BarrelSection, PlacedBarrelTilt
 from app.geometry.bevel import SideTilts
@@ -21,15 +21,50 @@ from .test_recipe import make_recipe
 
 OVAL = make_recipe(
     name="Oval 700 x 500",
-    tilt_mode=TiltMode.BARREL,
+    barrel_type=BarrelType.OVAL,
     barrel_diameter_mm=700.0,
     barrel_minor_diameter_mm=500.0,
 )
 
 
+@pytest.mark.parametrize(
+    ("row", "barrel_type"),
+    [
+        ({"tilt_mode": "fixed"}, BarrelType.FIXED_TILT),
+        ({"tilt_mode": "barrel", "barrel_diameter_mm": "600"}, BarrelType.ROUND),
+        (
+            {"tilt_mode": "barrel", "barrel_diameter_mm": "700", "barrel_minor_diameter_mm": "500"},
+            BarrelType.OVAL,
+        ),
+        ({"barrel_type": "round", "tilt_mode": "barrel", "barrel_diameter_mm": "600"}, None),
+    ],
+)
+def test_a_file_written_before_the_barrel_type_still_reads(row, barrel_type) -> None:
+    """Older files gave only tilt_mode; "barrel" with a short axis was an oval barrel."""
+    base = recipe_to_mapping(make_recipe())
+    del base["barrel_type"]
+    recipe = recipe_from_mapping({**base, **row})
+    assert recipe.barrel_type is (barrel_type or BarrelType.ROUND)
+    assert recipe.validate() == []
+    assert "tilt_mode" not in recipe_to_mapping(recipe)  # written as barrel_type only
+
+
+def test_an_unknown_barrel_type_names_the_field_the_value_and_the_choices() -> None:
+    base = recipe_to_mapping(make_recipe())
+    with pytest.raises(RecipeFormatError) as caught:
+        recipe_from_mapping({**base, "barrel_type": "square"})
+    assert str(caught.value) == ("barrel_type = 'square' is unknown: allowed fixed, round or oval")
+
+
+def test_a_round_barrel_is_never_made_oval_by_a_stray_short_axis() -> None:
+    stray = replace(OVAL, barrel_type=BarrelType.ROUND)
+    assert [e.field for e in stray.validate()] == ["barrel_minor_diameter_mm"]
+    assert stray.barrel_section == BarrelSection(350.0, 350.0)
+
+
 def test_barrel_types() -> None:
     assert make_recipe().barrel_type is BarrelType.FIXED_TILT
-    round_recipe = make_recipe(tilt_mode=TiltMode.BARREL, barrel_diameter_mm=600.0)
+    round_recipe = make_recipe(barrel_type=BarrelType.ROUND, barrel_diameter_mm=600.0)
     assert round_recipe.barrel_type is BarrelType.ROUND
     assert round_recipe.barrel_section == BarrelSection(300.0, 300.0)
     assert OVAL.barrel_type is BarrelType.OVAL
@@ -65,7 +100,9 @@ def test_a_placed_tilt_refuses_a_bevel_beyond_the_tilt_limits() -> None:
         ({"barrel_minor_diameter_mm": 300.0}, "barrel_minor_diameter_mm", "<= barrel_diameter_mm"),
         ({"barrel_minor_diameter_mm": 100.0}, "barrel_minor_diameter_mm", "240 <="),
         ({"barrel_minor_diameter_mm": math.nan}, "barrel_minor_diameter_mm", "not a finite"),
-        ({"tilt_mode": TiltMode.FIXED}, "barrel_minor_diameter_mm", "fixed tilt"),
+        ({"barrel_type": BarrelType.FIXED_TILT}, "barrel_minor_diameter_mm", "fixed tilt"),
+        ({"barrel_type": BarrelType.ROUND}, "barrel_minor_diameter_mm", "a round barrel"),
+        ({"barrel_minor_diameter_mm": None}, "barrel_minor_diameter_mm", "oval barrel needs it"),
         ({"target_width_mm": 300.0}, "target_width_mm", "300 is out of range"),
         ({"target_width_mm": 70.0}, "target_width_mm", "the head would be 56.0 mm wide"),
     ],
@@ -93,5 +130,7 @@ def test_the_database_keeps_the_barrel_fields(db: Database, users: dict[Role, Us
     assert saved.id is not None
     assert db.get_recipe(saved.id) == saved
     assert saved.barrel_minor_diameter_mm == 500.0 and saved.target_width_mm == 120.0
-    changed = db.save_recipe(replace(saved, barrel_minor_diameter_mm=None), users[Role.OPERATOR])
+    assert db.get_recipe(saved.id).barrel_type is BarrelType.OVAL
+    round_again = replace(saved, barrel_type=BarrelType.ROUND, barrel_minor_diameter_mm=None)
+    changed = db.save_recipe(round_again, users[Role.OPERATOR])
     assert db.get_recipe(saved.id).barrel_type is BarrelType.ROUND == changed.barrel_type

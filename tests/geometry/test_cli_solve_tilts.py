@@ -60,7 +60,10 @@ def test_a_round_barrel_bevels_both_sides_alike(capsys) -> None:
         (["--barrel-axes-mm", "350"], "is not AxB"),
         (["--barrel-axes-mm", "250x350"], "barrel_b_mm = 350"),
         (["--barrel-axes-mm", "350x250", "--barrel-start-deg", "400"], "barrel_start_deg = 400"),
-        (["--tilt", "5", "--tilt-b", "abc"], "tilt_b_deg = 'abc'"),
+        (["--tilt", "5", "--tilt-b", "abc"], "--tilt-b: tilt of side B = 'abc' is not a"),
+        (["--tilt", "5", "--tilt-b", "89"], "--tilt-b: tilt of side B = 89 is out of range"),
+        (["--tilt", "5", "--tilt-b", "30"], "--tilt-b: tilt of side B = 30 is out of range"),
+        (["--tilt", "30", "--tilt-b", "5"], "--tilt: tilt of side A = 30 is out of range"),
         (["--barrel-diameter-mm", "100"], "barrel_diameter_mm = 100"),
         (["--barrel-axes-mm", "350x250"], "z_deg = 15.664 is out of range"),
     ],
@@ -69,3 +72,4 @@ def test_bad_bevel_options_are_one_line(capsys, extra, text) -> None:
     assert main([*BOARD, *extra]) == 2
     _, err = capsys.readouterr()
     assert err.count("\n") == 1 and text in err
+    assert "tilt_deg" not in err and "tilt_b_deg" not in err

@@ -112,7 +112,8 @@ def test_each_distinct_bevel_is_validated() -> None:
 
     exc = refusal(replace(STAVE, tilt=Steep()), 150.0)
     assert exc.stage is CutStage.STAVE
-    assert "tilt_deg" in exc.fields
+    assert exc.fields == ("tilt_b_deg",)  # the steep side named, not the other
+    assert "tilt of side B = 60" in str(exc)
 
 
 def test_a_refusal_crosses_a_process_boundary_intact() -> None:

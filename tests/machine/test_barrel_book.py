@@ -12,7 +12,7 @@ import pytest
 
 from app.data.barrel_records import BarrelState
 from app.data.database import Database
-from app.data.recipe import BarrelType, TiltMode
+from app.data.recipe import BarrelType
 from app.geometry.limits import DEFAULT_LIMITS
 from app.machine import commands as cmd
 from app.machine.barrel_book import BarrelBook, OpenBarrel
@@ -25,7 +25,7 @@ from .conftest import make_rig
 
 OVAL = make_recipe(
     name="Oval 700 x 500",
-    tilt_mode=TiltMode.BARREL,
+    barrel_type=BarrelType.OVAL,
     barrel_diameter_mm=700.0,
     barrel_minor_diameter_mm=500.0,
 )

@@ -8,7 +8,7 @@ import math
 import pytest
 
 from app.cli.solve import PROCESS_DEFAULTS
-from app.data.recipe import TiltMode
+from app.data.recipe import BarrelType
 from app.geometry.limits import DEFAULT_LIMITS
 from app.geometry.stave_cut import MAX_DEPTH_PARAMETER
 from app.machine.barrel_job import new_barrel, plan_barrel_board
@@ -19,7 +19,7 @@ from tests.data.test_recipe import make_recipe
 
 from .planner.support import HOME, LIMITS
 
-ROUND = make_recipe(name="Round 600", tilt_mode=TiltMode.BARREL, barrel_diameter_mm=600.0)
+ROUND = make_recipe(name="Round 600", barrel_type=BarrelType.ROUND, barrel_diameter_mm=600.0)
 
 
 def plan(barrel, width_mm: float, choice: BoardChoice | None = None, params=PROCESS_DEFAULTS):

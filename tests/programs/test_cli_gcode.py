@@ -137,3 +137,25 @@ def test_usage_errors_are_one_line_too(capsys):
     out, err = capsys.readouterr()
     assert (exited.value.code, out) == (2, "")
     assert err == "stave gcode: one of the arguments --recipe --recipe-file is required\n"
+
+
+@pytest.mark.parametrize(
+    ("barrel", "expected"),
+    [
+        ({"barrel_type": "egg"}, "barrel_type = 'egg' is unknown: allowed fixed, round or oval"),
+        ({"barrel_type": "oval", "barrel_diameter_mm": 700}, "barrel_minor_diameter_mm is missing"),
+        (
+            {"barrel_type": "round", "barrel_diameter_mm": 700, "barrel_minor_diameter_mm": 500},
+            "barrel_minor_diameter_mm = 500 has no use with a round barrel",
+        ),
+    ],
+)
+def test_a_recipe_files_barrel_type_is_checked(capsys, tmp_path, barrel, expected) -> None:
+    """The barrel type is the file's own choice: a bad or contradicting one is refused in
+    one line naming the field, the value and what is allowed."""
+    row = {**recipe_to_mapping(RECIPES[1]), **barrel}
+    path = tmp_path / "barrel.json"
+    path.write_text(json.dumps([row]), encoding="utf-8")
+    code, out, err = gcode(capsys, "--recipe-file", str(path), "--width", "150")
+    assert code == 2 and out == "" and len(err.splitlines()) == 1
+    assert expected in err, err

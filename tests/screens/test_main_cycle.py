@@ -6,6 +6,7 @@ from __future__ import annotations
 from datetime import UTC, datetime
 
 from app.machine.states import MachineState
+from app.screens.recipe_chooser import RecipeChooser
 from app.screens.widgets.dialogs import ChoiceOverlay, ConfirmOverlay
 from app.screens.widgets.keyboard import TextKeyboard
 from app.screens.widgets.lamp import LampColor
@@ -38,7 +39,7 @@ def test_pick_a_recipe_start_and_watch_a_whole_cycle(qtbot, window, database, ta
     # Pick the second recipe from the list.
     tap(find_button(window, "recipeList"))
     overlay = window.overlay()
-    assert isinstance(overlay, ChoiceOverlay)
+    assert isinstance(overlay, RecipeChooser)
     tap(overlay.buttons[1])
     wait_for(qtbot, window, lambda s: s.recipe_id == recipes[1].id)
     assert main.number_label.text() == f"No. {recipes[1].id}"

@@ -75,7 +75,9 @@ def test_a_width_ratio_that_makes_the_head_too_narrow_is_refused(qtbot, window, 
     keys(tap, keypad, "5")
     tap(find_button(keypad, "okButton"))
     assert keypad.is_open
-    assert "width_ratio" in keypad.error_label.text()
+    assert keypad.error_label.text() == (
+        "0.2 makes the head narrower than 60 mm even on a board of 280 mm: allowed 0.214 to below 1"
+    )
     tap(find_button(keypad, "cancelButton"))
     assert screen.draft == original
 
@@ -191,7 +193,9 @@ def test_export_then_import(qtbot, window, database, tap, tmp_path) -> None:
     report = window.overlay()
     assert isinstance(report, MessageOverlay)
     text = report.message_label.text()
-    assert "1 accepted" in text and "1 rejected" in text and "length_mm = 500" in text
+    assert "1 accepted" in text and "1 rejected" in text
+    assert "row 2 (Too short): 500 is outside the allowed range: 900 to 3500 mm" in text
+    assert "length_mm" not in text  # the reason in words, not the program's field
     assert database.get_recipe_by_name("Imported 1") is not None
     window.session.logout()
 
@@ -267,4 +271,8 @@ def test_the_list_shows_each_recipes_widths_on_this_machine(qtbot, window, datab
         widths = cuttable_widths(recipe.stave, parameters, database.limits)  # the machine's own
         assert widths is not None, recipe.name  # the shipped recipes fit the shipped machine
         expected = f"{format_number(widths.min_mm, 1)} to {format_number(widths.max_mm, 1)} mm"
-        assert item.text() == f"{recipe.id}  {recipe.name}\n{expected}"
+        if window.poller.snapshot.recipe_id == recipe.id:  # marked
+            expected = f"on the machine, {expected}"
+            assert item.text() == f"▶ {recipe.id}  {recipe.name}\n{expected}"
+        else:
+            assert item.text() == f"{recipe.id}  {recipe.name}\n{expected}"

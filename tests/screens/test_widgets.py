@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -10,7 +11,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.data.parameters import DEFAULT_PARAMETERS
-from app.data.recipe import Recipe, TiltMode
+from app.data.recipe import BarrelType, Recipe
 from app.geometry.limits import DEFAULT_LIMITS
 from app.geometry.ratio import Ratio
 from app.machine.commands import JOG_DEADMAN_S, JOG_REFRESH_S
@@ -30,7 +31,7 @@ EXAMPLE = Recipe(
     thickness_mm=27.0,
     length_ratio=Ratio(1, 4),
     width_ratio=Ratio(3, 4),
-    tilt_mode=TiltMode.FIXED,
+    barrel_type=BarrelType.FIXED_TILT,
     tilt_deg=7.5,
     barrel_diameter_mm=None,
     barrel_perimeter_mm=None,
@@ -195,9 +196,13 @@ def test_preview_matches_the_worked_example_of_the_spec() -> None:
 def test_preview_reports_a_bad_width_instead_of_raising() -> None:
     preview = preview_recipe(EXAMPLE, 300.0, DEFAULT_PARAMETERS, DEFAULT_LIMITS)
     assert not preview.ok
-    assert any("width_mm = 300" in e and "280" in e for e in preview.errors)
+    assert "A board of 300 mm is outside the widths this machine takes: up to 280 mm" in (
+        preview.errors
+    )
     narrow = preview_recipe(EXAMPLE, 70.0, DEFAULT_PARAMETERS, DEFAULT_LIMITS)
-    assert any("head_width_mm" in e for e in narrow.errors)
+    assert "The head would be 52.5 mm wide: allowed 60 mm or more" in narrow.errors
+    for error in (*preview.errors, *narrow.errors):  # words, no program field names
+        assert not re.search(r"\b[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]+\b", error), error
 
 
 def test_preview_refuses_a_stave_beyond_the_axis_travel_as_the_machine_does() -> None:
@@ -205,7 +210,10 @@ def test_preview_refuses_a_stave_beyond_the_axis_travel_as_the_machine_does() ->
     short_x = replace(DEFAULT_LIMITS, x_max_mm=EXAMPLE.length_mm)
     preview = preview_recipe(EXAMPLE, 150.0, DEFAULT_PARAMETERS, short_x)
     assert not preview.ok and preview.outline == ()
-    assert any(e.startswith("x_mm = ") and "X axis travel" in e for e in preview.errors)
+    assert any(
+        e.startswith("The tool path reaches X = ") and "beyond the axis travel" in e
+        for e in preview.errors
+    )
     assert preview.tilt_deg == 7.5
 
 

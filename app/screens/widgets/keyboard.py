@@ -54,10 +54,12 @@ class TextKeyboard(Overlay):
         max_length: int = 40,
         layout: str = "qwerty",
         check: TextCheck | None = None,
+        allow_empty: bool = False,
         parent: QWidget | None = None,
     ) -> None:
         super().__init__(parent)
         self.setObjectName("textKeyboard")
+        self.allow_empty = allow_empty  # a search: OK on an empty text clears it
         self.text = text
         self.max_length = max_length
         self.shift = False
@@ -182,7 +184,7 @@ class TextKeyboard(Overlay):
 
     def problem(self) -> str:
         text = self.text.strip()
-        if not text:
+        if not text and not self.allow_empty:
             return self.tr("Enter a text.")
         return self._check(text) if self._check is not None else ""
 
