@@ -174,7 +174,9 @@ def test_the_closing_stave_leaves_no_gap(case):
 @given(st.floats(240.0, 4500.0), st.lists(st.floats(20.0, 280.0), min_size=1, max_size=30))
 def test_on_a_circle_both_bevels_are_asin_w_over_d(diameter, widths):
     section = BarrelSection.circle(diameter)
-    widths = [w for w in widths if w < diameter]
+    # A stave as wide as the barrel (a bevel of 90 degrees) has a joint angle that depends
+    # on the width without bound (d asin(x)/dx at x = 1): compare where it is well posed.
+    widths = [w for w in widths if w < 0.99 * diameter]
     plan = plan_barrel(section, widths)
     turned = 0.0
     for stave in plan.staves:
