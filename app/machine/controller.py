@@ -270,6 +270,10 @@ class MachineController(OperatorRoom):
         return self.production.pieces_shift
 
     @property
+    def plan_shifts_begun(self) -> int:
+        return self.production.plan_shifts_begun
+
+    @property
     def pieces_total(self) -> int:
         return self.production.pieces_total
 

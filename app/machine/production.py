@@ -41,6 +41,9 @@ class Production:
         self.finished_cycles: list[tuple[PieceRecord, AutomaticCycle]] = []
         self._shift_params: dict[str, float] | None = None  # None: counting since power-up
         self.operator_name = ""  # who each record names (SetUser): the shift's operator
+        # Shifts of the plan begun while the machine ran: the panel asks the new operator's
+        # name at each one.
+        self.plan_shifts_begun = 0
 
     def follow_shifts(self, params: Mapping[str, float]) -> None:
         """Count the pieces of the shift the plan says is running (those stored before a
@@ -60,6 +63,11 @@ class Production:
         start = shift_start_s(self._shift_params, self._wall_clock())
         if start == self._plan_start_s:
             return
+        if self._plan_start_s is not None:
+            # The plan's next shift began: the last shift's operator no longer cuts here, so
+            # no record of the new shift names him (the panel asks the new one's name).
+            self.plan_shifts_begun += 1
+            self.operator_name = ""
         self._plan_start_s = self.shift_start = start
         shift, total = self._store.piece_counts(start)
         self.pieces_shift = shift

@@ -161,6 +161,7 @@ class MachineSnapshot:
     recipe_id: int | None
     recipe_name: str
     pieces_shift: int
+    plan_shifts_begun: int  # counts up when the shift plan's next shift begins
     pieces_total: int
     last_width_mm: float | None
     last_cycle_time_s: float | None  # from Start to the clamps open, the wait included

@@ -53,6 +53,9 @@ class MachineController(Protocol):
     def pieces_shift(self) -> int: ...
 
     @property
+    def plan_shifts_begun(self) -> int: ...
+
+    @property
     def pieces_total(self) -> int: ...
 
     @property
@@ -143,6 +146,7 @@ def build_snapshot(c: MachineController, seq: int) -> MachineSnapshot:
         recipe_id=recipe.id if recipe else None,
         recipe_name=recipe.name if recipe else "",
         pieces_shift=c.pieces_shift,
+        plan_shifts_begun=c.plan_shifts_begun,
         pieces_total=c.pieces_total,
         last_width_mm=c.last_width_mm,
         last_cycle_time_s=c.last_cycle_time_s,

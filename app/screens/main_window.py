@@ -73,6 +73,8 @@ class MainWindow(QMainWindow):
         self.exit_code = 0
         self._notice = ""
         self._logged_in = False
+        self._plan_shifts_seen: int | None = None  # the machine's count at the last snapshot
+        self._name_keyboard: TextKeyboard | None = None  # the operator's name being asked
         self.machine_message = ExpiringMessage()
         self.session = Session(self._default_user, parent=self)
         self.pin_checker = PinChecker(database.path, parent=self)
@@ -183,6 +185,7 @@ class MainWindow(QMainWindow):
     # -- machine -----------------------------------------------------------------------------
 
     def on_snapshot(self, snapshot: MachineSnapshot, force: bool = False) -> None:
+        self._follow_plan_shifts(snapshot)
         self.top_bar.show_snapshot(snapshot, self._notice or self._machine_text(snapshot))
         self.banner.show_alarms(snapshot, self.tr("(+%1 more)"), force)
         count = len(snapshot.alarms)
@@ -255,6 +258,19 @@ class MainWindow(QMainWindow):
         elif choice == "name":
             self.ask_operator_name()
 
+    def _follow_plan_shifts(self, snapshot: MachineSnapshot) -> None:
+        """The shift plan's next shift began while the panel ran: the last shift's operator
+        is forgotten and the new one is asked his name, as at New shift (the machine already
+        records the new shift's boards without the old name)."""
+        seen = self._plan_shifts_seen
+        self._plan_shifts_seen = snapshot.plan_shifts_begun
+        if seen is None or snapshot.plan_shifts_begun == seen:
+            return
+        if self.session.operator_name:
+            self.session.name_operator("")
+        if self._name_keyboard is None:
+            self.ask_operator_name()
+
     def start_new_shift(self) -> TextKeyboard:
         """New shift: the shift's counter starts from 0 and its operator names himself. The
         last shift's name is cleared first, so no record of the new shift carries it (if
@@ -275,8 +291,14 @@ class MainWindow(QMainWindow):
             layout=self.context.keyboard_layout(),
         )
         keyboard.textAccepted.connect(self.session.name_operator)
+        self._name_keyboard = keyboard
+        keyboard.finished.connect(lambda _ok: self._name_asked(keyboard))
         self.context.open(keyboard)
         return keyboard
+
+    def _name_asked(self, keyboard: TextKeyboard) -> None:
+        if self._name_keyboard is keyboard:
+            self._name_keyboard = None
 
     def ask_pin(self, title: str, required: Role = Role.OPERATOR) -> Keypad:
         """Open the PIN pad; a PIN below ``required`` is refused with a message."""

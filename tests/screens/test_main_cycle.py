@@ -3,6 +3,7 @@ a whole simulated cycle finish and the counter rise."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from datetime import UTC, datetime
 
 from app.machine.states import MachineState
@@ -171,6 +172,27 @@ def test_new_shift_cancelled_at_the_name_leaves_no_name(qtbot, window, tap) -> N
     tap(find_button(window.overlay(), "cancelButton"))
     assert window.overlay() is None
     assert window.session.operator_name == "" and window.session.name == "operator"
+
+
+def test_the_plans_next_shift_asks_the_new_operator_once(qtbot, window, tap) -> None:
+    """When the machine says the shift plan's next shift began, the last operator's name
+    goes and the new operator is asked his; the same count again asks nothing."""
+    window.session.name_operator("ana")
+    snapshot = wait_for(qtbot, window, lambda s: True)
+    window.poller.stop()  # only the snapshots below reach the window
+    next_shift = replace(snapshot, plan_shifts_begun=snapshot.plan_shifts_begun + 1)
+    window.on_snapshot(next_shift)
+    keyboard = window.overlay()
+    assert isinstance(keyboard, TextKeyboard) and keyboard.text == ""
+    assert window.session.operator_name == ""
+    window.on_snapshot(next_shift)  # the same shift: no second keyboard
+    assert window.overlay() is keyboard
+    for char in "marko":
+        tap(find_button(keyboard, f"key_{char}"))
+    tap(find_button(keyboard, "okButton"))
+    assert window.overlay() is None and window.session.operator_name == "marko"
+    window.on_snapshot(next_shift)
+    assert window.overlay() is None
 
 
 def test_shut_down_asks_then_closes_the_link(qtbot, window, machine, tap) -> None:
