@@ -68,19 +68,27 @@ class UsageError(Exception):
     """Bad command-line input: one line, exit code 2."""
 
 
+MAX_INJECT_DELAY_S = 600.0  # longer than any step of a cycle
+
+
 @dataclass(frozen=True)
 class Injection:
     kind: str
     target: str
     step: CycleStep
+    # How long into the step: 0 is as it begins; a few seconds into cutting_a puts the
+    # fault in the middle of side A, the cutter in the board.
+    after_s: float = 0.0
 
     @classmethod
     def parse(cls, text: str) -> Injection:
         if not text.strip():
             raise UsageError(
-                "--inject '': empty is not allowed: KIND[:TARGET]@STEP (or leave --inject out)"
+                "--inject '': empty is not allowed: KIND[:TARGET]@STEP[+SECONDS] "
+                "(or leave --inject out)"
             )
-        what, _, step_name = text.partition("@")
+        what, _, when = text.partition("@")
+        step_name, plus, delay = when.partition("+")
         kind, _, target = what.partition(":")
         if kind not in FAULT_KINDS:
             raise UsageError(
@@ -91,7 +99,18 @@ class Injection:
                 f"--inject {text!r}: step {step_name!r} is not allowed: one of "
                 + ", ".join(STEP_NAMES)
             )
-        return cls(kind, target, STEP_NAMES[step_name])
+        after_s = 0.0
+        if plus:
+            try:
+                after_s = float(delay) if len(delay) <= 20 else math.nan
+            except ValueError:
+                after_s = math.nan
+            if not 0.0 <= after_s <= MAX_INJECT_DELAY_S:
+                raise UsageError(
+                    f"--inject {text!r}: seconds into the step {delay!r} is not allowed: "
+                    f"a number from 0 to {MAX_INJECT_DELAY_S:.0f}"
+                )
+        return cls(kind, target, STEP_NAMES[step_name], after_s)
 
 
 @dataclass
@@ -209,8 +228,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--cycles", type=int, default=1, metavar="N")
     parser.add_argument(
         "--inject",
-        metavar="KIND[:TARGET]@STEP",
-        help="inject a fault when the cycle reaches STEP; KIND is one of "
+        metavar="KIND[:TARGET]@STEP[+SECONDS]",
+        help="inject a fault when the cycle reaches STEP (or SECONDS into it); KIND is one of "
         + ", ".join(FAULT_KINDS)
         + "; TARGET an axis (X, Y, Z) or the "
         "simulation's target (e.g. clamp_sensor:open); STEP one of " + ", ".join(STEP_NAMES),
@@ -364,14 +383,19 @@ def _run_cycle(
     alarms_before = {a.alarm_id for a in c.alarms.views()}
     c.post(cmd.Start())
     injected = False
+    step_began_s: float | None = None
 
     def finished(m: MachineController) -> bool:
-        nonlocal injected
+        nonlocal injected, step_began_s
+        in_step = injection is not None and m.cycle is not None and m.cycle.step is injection.step
+        if in_step and step_began_s is None:
+            step_began_s = m.now_s
         if (
             injection is not None
             and not injected
-            and m.cycle is not None
-            and m.cycle.step is injection.step
+            and in_step
+            and step_began_s is not None
+            and m.now_s - step_began_s >= injection.after_s
         ):
             faults = runtime.backend.extras.get("faults")
             if isinstance(faults, FaultInjector):
@@ -404,8 +428,9 @@ def _run_cycle(
             report.cut_time_s = {"A": o.cut_time_a_s, "B": o.cut_time_b_s}
             report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
     if injection is not None:
-        report.injection = f"{injection.kind}@{injection.step.name.lower()}: " + (
-            "never reached that step"
+        delay = f"+{injection.after_s:g}" if injection.after_s else ""
+        report.injection = f"{injection.kind}@{injection.step.name.lower()}{delay}: " + (
+            "never reached that step (or left it before that time)"
             if not injected
             else "raised " + (", ".join(report.alarms) or "no alarm")
             if report.result != "ok"

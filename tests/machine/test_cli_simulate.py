@@ -154,7 +154,15 @@ def test_console_script_runs_without_traceback(tmp_path: Path) -> None:
     assert "Traceback" not in result.stderr and "--recipe-file" in result.stderr
 
 
-@pytest.mark.parametrize("injection", ["spindle@cutting_b", "estop@repositioning"])
+@pytest.mark.parametrize(
+    "injection",
+    [
+        "spindle@cutting_b",
+        "estop@repositioning",
+        "estop@cutting_a+5",
+        "following_error:X@cutting_b+4",
+    ],
+)
 def test_inject_then_resume_never_crosses_the_board_in_the_trace(
     capsys, tmp_path: Path, injection: str
 ) -> None:
@@ -204,6 +212,31 @@ def test_inject_then_resume_never_crosses_the_board_in_the_trace(
             )
     assert watch.touching_periods > 1000, "the trace holds the cut"
     assert watch.violations == []
+
+
+@pytest.mark.parametrize(
+    ("injection", "why"),
+    [
+        ("estop@cutting_a+", "seconds into the step ''"),
+        ("estop@cutting_a+-1", "seconds into the step '-1'"),
+        ("estop@cutting_a+nan", "seconds into the step 'nan'"),
+        ("estop@cutting_a+1e999", "seconds into the step '1e999'"),
+        ("estop@cutting_a+601", "seconds into the step '601'"),
+    ],
+)
+def test_a_bad_time_into_the_step_is_refused(capsys, injection: str, why: str) -> None:
+    code, _, err = simulate(capsys, "--recipe", BARRIQUE, "--width", "150", "--inject", injection)
+    assert code == 2 and why in err and "a number from 0 to 600" in err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1
+
+
+def test_an_injection_later_than_the_step_lasts_says_so(capsys) -> None:
+    code, out, err = simulate(
+        capsys, "--recipe", BARRIQUE, "--width", "150", "--inject", "estop@measuring+500", "--json"
+    )
+    assert code == 0, err
+    cycle = json.loads(out)["cycles"][0]
+    assert cycle["result"] == "ok" and "never reached that step" in cycle["injection"]
 
 
 def test_resume_needs_an_injection(capsys) -> None:
