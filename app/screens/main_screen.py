@@ -269,7 +269,7 @@ class MainScreen(Screen):
         right.addLayout(step_times)
 
         layout = QHBoxLayout(self)
-        layout.setContentsMargins(8, 8, 8, 8)
+        layout.setContentsMargins(8, 6, 8, 6)  # at 1024x768 every pixel of height counts
         layout.setSpacing(10)
         layout.addWidget(left_widget)
         layout.addLayout(right, 1)

@@ -93,7 +93,13 @@ class RecipeChooser(Overlay):
                 widget.deleteLater()
         matching = wanted.apply(self.recipes)
         for index, recipe in enumerate(matching):
-            button = elided_button(f"chooseRecipe_{recipe.id}", text=recipe_button_text(recipe))
+            # The middle goes: the number in front and the end of the name (often what tells
+            # a recipe from its neighbours, "... 27 mm") both stay.
+            button = elided_button(
+                f"chooseRecipe_{recipe.id}",
+                text=recipe_button_text(recipe),
+                mode=Qt.TextElideMode.ElideMiddle,
+            )
             button.setProperty("align", "left")
             button.setCheckable(True)
             button.setChecked(recipe.id == self.current_id)

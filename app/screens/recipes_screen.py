@@ -71,7 +71,7 @@ from app.screens.width_ranges import PENDING, WidthRanges
 DEFAULT_PREVIEW_WIDTH_MM = 150.0
 RANGE_POLL_MS = 50  # how often the list looks for width ranges the worker has finished
 LABEL_WIDTH_PX = 165
-LIST_WIDTH_PX = 220
+LIST_WIDTH_PX = 250
 TEXT_ROWS = ("name", "note", "drawing")
 """Rows whose value is text: under their label, across the form (a name is read whole)."""
 MACHINE_MARK = "▶"
@@ -218,6 +218,7 @@ class RecipesScreen(Screen):
         list_buttons.addWidget(self.import_button, 2, 0)
         list_buttons.addWidget(self.export_button, 2, 1)
         list_layout = QVBoxLayout()
+        list_layout.setContentsMargins(0, 4, 0, 4)  # the panels beside it have their own frames
         title_row = QHBoxLayout()
         title_row.addWidget(self.list_title, 1)
         assert self.filter_bar.type_button is not None  # a compact bar
@@ -367,8 +368,8 @@ class RecipesScreen(Screen):
         layout.setContentsMargins(8, 8, 8, 8)
         layout.setSpacing(8)
         layout.addWidget(self.list_widget)
-        layout.addWidget(editor, 5)
-        layout.addWidget(preview_panel, 4)
+        layout.addWidget(editor, 3)
+        layout.addWidget(preview_panel, 2)
         self.retranslate()
         self.reload()
 

@@ -144,17 +144,22 @@ def _homed_and_ready(driver: Driver) -> None:
         )
 
 
+def _clear_the_alarm(driver: Driver) -> None:
+    """Acknowledge the alarm the pictures before raised, clear the simulated fault, Reset."""
+    driver.window.link.send(Acknowledge(0))
+    driver.window.link.send(ClearFaults())
+    _homed_and_ready(driver)
+    driver.window.clear_notice()
+
+
 def _board_done_after(pieces_before: int) -> Callable[[MachineSnapshot], bool]:
     """The machine is ready again with one more piece counted than ``pieces_before``."""
     return lambda s: s.pieces_total > pieces_before and s.state is MachineState.READY
 
 
 def _cut_until_the_closing_question(driver: Driver) -> None:
-    """Clear the alarm the pictures before left, then cut boards of the barrel already
-    started, Start and a board each, as an operator would, until the panel asks about the
-    closing stave."""
-    driver.window.link.send(Acknowledge(0))
-    driver.window.link.send(ClearFaults())
+    """Cut boards of the barrel already started, Start and a board each, as an operator
+    would, until the panel asks about the closing stave."""
     _homed_and_ready(driver)
     for _ in range(CLOSING_BOARDS_MAX):
         snapshot = driver.until(lambda s: s.state is MachineState.READY, "ready for a board")
@@ -240,6 +245,26 @@ def simulate_last_shift(database: Database, now: datetime) -> int:
             )
         written += 1
     return written
+
+
+VARIANT_THICKNESSES_MM = (25.0, 30.0, 36.0, 45.0, 55.0, 70.0)
+"""Stave thicknesses a cooperage keeps recipes for, beside each sample recipe's own."""
+
+
+def add_thickness_variants(database: Database) -> int:
+    """Give the screenshot database the recipe list of a working cooperage: each sample
+    recipe also in other stave thicknesses, named by them; returns how many were added.
+
+    The screenshot database is a copy that is thrown away; nothing here reaches the panel's."""
+    operator = min(database.list_users(), key=lambda user: user.role)
+    variants = [
+        replace(recipe, id=None, name=f"{recipe.name} {thickness:g} mm", thickness_mm=thickness)
+        for recipe in database.list_recipes()
+        for thickness in VARIANT_THICKNESSES_MM
+        if thickness != recipe.thickness_mm
+    ]
+    database.save_recipes(variants, operator)
+    return len(variants)
 
 
 def render_screenshots(
@@ -398,6 +423,7 @@ def render_screenshots(
             system_page.sim_scroll.ensureWidgetVisible(system_page.sim_pendant)  # type: ignore[attr-defined]
             shoot("system-simulation")
             window.session.logout()
+            _clear_the_alarm(driver)  # the pictures after this one show a working machine
 
             # Production at a glance: the shift before this one, simulated from this run's
             # board (the screenshot database is a throw-away copy).
@@ -411,10 +437,12 @@ def render_screenshots(
             shoot("production")
 
             # Finding a recipe: the Recipes list searched and filtered, the main screen's
-            # chooser filtered by barrel type.
+            # chooser filtered by barrel type, among the many recipes of a working cooperage.
+            add_thickness_variants(database)
             window.show_screen("recipes")
             recipes_page = window.page("recipes")
-            recipes_page.filter_bar.set_filter(RecipeFilter("ea", BarrelType.ROUND))  # type: ignore[attr-defined]
+            recipes_page.reload()  # type: ignore[attr-defined]
+            recipes_page.filter_bar.set_filter(RecipeFilter("bordeaux", BarrelType.ROUND))  # type: ignore[attr-defined]
             shoot("recipes-search")
             recipes_page.filter_bar.set_filter(RecipeFilter())  # type: ignore[attr-defined]
             window.show_screen("main")

@@ -10,7 +10,7 @@ import numpy as np
 from app.data.recipe_profile import RecipeProfile
 from app.data.users import Role
 from app.geometry.profile_kinds import ProfileKind
-from app.screens.widgets.dialogs import ChoiceOverlay
+from app.screens.recipe_chooser import RecipeChooser
 from tests.screens.helpers import find_button, home_from_main_screen, wait_for
 
 
@@ -25,8 +25,8 @@ def test_plan_view_draws_the_parabola_while_cutting(qtbot, window, database, tap
     home_from_main_screen(qtbot, window, tap)
     tap(find_button(window, "recipeList"))
     overlay = window.overlay()
-    assert isinstance(overlay, ChoiceOverlay)
-    tap(next(b for b in overlay.buttons if "Parabola side" in b.text()))
+    assert isinstance(overlay, RecipeChooser)
+    tap(find_button(overlay, f"chooseRecipe_{parabola.id}"))
     wait_for(qtbot, window, lambda s: s.recipe_id == parabola.id)
     start = find_button(window, "startButton")
     wait_for(qtbot, window, lambda s: not s.allowed.get("Start"))

@@ -36,6 +36,7 @@ def test_superellipse_chosen_with_its_exponent_on_the_keypad_and_saved(
     assert screen.field_buttons["semi_axis_ratio"].isVisible()
     assert not screen.field_buttons["length_ratio"].isVisible()
     assert "2 … 10" in screen.range_labels["exponent"].text()
+    screen.form_scroll.ensureWidgetVisible(screen.field_buttons["exponent"])  # as a finger
     tap(screen.field_buttons["exponent"])
     keypad = window.overlay()
     assert is_keypad(keypad, KeypadMode.NUMBER)

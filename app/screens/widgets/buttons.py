@@ -32,6 +32,10 @@ class ElidedButton(QPushButton):
     note): cut text without a sign looks like the whole value. ``text()`` stays the whole
     text; a tap opens what shows it whole (the keyboard, the recipe)."""
 
+    # Where the ellipsis goes: at the end by default; in the middle where names differ only
+    # at their ends (recipes of one barrel in several thicknesses).
+    elide_mode = Qt.TextElideMode.ElideRight
+
     def shown_text(self) -> str:
         """The text as drawn: whole, or cut with an ellipsis to the button's width."""
         option = QStyleOptionButton()
@@ -39,7 +43,7 @@ class ElidedButton(QPushButton):
         style = self.style()
         contents = style.subElementRect(QStyle.SubElement.SE_PushButtonContents, option, self)
         width = contents.width() - 2 * ELIDE_MARGIN_PX
-        return self.fontMetrics().elidedText(self.text(), Qt.TextElideMode.ElideRight, width)
+        return self.fontMetrics().elidedText(self.text(), self.elide_mode, width)
 
     def paintEvent(self, event: QPaintEvent) -> None:
         option = QStyleOptionButton()
@@ -54,9 +58,15 @@ ELIDE_MARGIN_PX = 6
 """Room kept inside the button's padding so the ellipsis never touches its border."""
 
 
-def elided_button(name: str = "", kind: str = "", text: str = "") -> ElidedButton:
+def elided_button(
+    name: str = "",
+    kind: str = "",
+    text: str = "",
+    mode: Qt.TextElideMode = Qt.TextElideMode.ElideRight,
+) -> ElidedButton:
     """A :func:`touch_button` that elides its text (same look, never takes focus)."""
     button = ElidedButton(text)
+    button.elide_mode = mode
     if name:
         button.setObjectName(name)
     if kind:
