@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QApplication, QPushButton, QWidget
 
 from app.data.database import Database
@@ -43,6 +44,9 @@ def _uninstall_left_translators() -> None:
     texts of the next test, whichever test file ran before on this worker."""
     if QApplication.instance() is None:
         return
+    # Delete now what earlier tests closed (pytest-qt's deleteLater): a closed window left
+    # alive would still receive the next test's language change and read its closed database.
+    QApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
     for widget in QApplication.topLevelWidgets():
         for manager in widget.findChildren(LanguageManager):
             manager.uninstall()
