@@ -22,6 +22,7 @@ from app.machine.barrel_set import BoardChoice
 from app.machine.barrel_view import BarrelView
 from app.machine.commands import ChooseBoard, StartBarrel
 from app.machine.snapshot import MachineSnapshot
+from app.screens.barrel_overlay import BarrelOverlay
 from app.screens.base import ScreenContext, refusal
 from app.screens.formatting import format_number
 from app.screens.widgets.barrel_drawing import BarrelDrawing
@@ -37,6 +38,8 @@ class BarrelPanel(QFrame):
         self.context = context
         self.view: BarrelView | None = None
         self.drawing = BarrelDrawing()
+        self.drawing.tapped.connect(self.open_big_drawing)
+        self.big_drawing: BarrelOverlay | None = None
         self.staves_label = styled_label("", "figure", "barrelStaves")
         self.gap_label = styled_label("", "caption", "barrelGap")
         self.left_label = styled_label("", "caption", "barrelLeft")
@@ -93,9 +96,28 @@ class BarrelPanel(QFrame):
         self.card_button.setText(self.tr("Cooper's card"))
         self._texts()
 
+    def open_big_drawing(self) -> BarrelOverlay | None:
+        """The barrel drawn over the whole screen, following the machine while open."""
+        if self.view is None:
+            return None
+        overlay = BarrelOverlay(self.view)
+        self.big_drawing = overlay
+        overlay.finished.connect(lambda _ok: self._big_drawing_closed(overlay))
+        self.context.open(overlay)
+        return overlay
+
+    def _big_drawing_closed(self, overlay: BarrelOverlay) -> None:
+        if self.big_drawing is overlay:
+            self.big_drawing = None
+
     def show_barrel(self, view: BarrelView | None, snapshot: MachineSnapshot | None) -> None:
         self.view = view
         self.drawing.set_view(view)
+        if self.big_drawing is not None:
+            if view is None:
+                self.big_drawing.reject()
+            else:
+                self.big_drawing.show_view(view)
         reason = refusal(snapshot, "StartBarrel")
         self.start_button.setEnabled(not reason)
         self.start_button.setToolTip(reason)

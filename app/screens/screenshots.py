@@ -459,6 +459,11 @@ def render_screenshots(
                 _cut_until_the_closing_question(driver)
                 window.show_screen("main")
                 shoot("main-closing-question")
+                # The barrel drawn big (a tap on the small drawing): the staves' numbers.
+                big = window.page("main").barrel_panel.open_big_drawing()  # type: ignore[attr-defined]
+                if big is not None:
+                    shoot("main-barrel-drawing")
+                    big.reject()
         finally:
             window.poller.stop()
             window.close()

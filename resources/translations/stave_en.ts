@@ -964,9 +964,42 @@
     </message>
 </context>
 <context>
+    <name>BarrelOverlay</name>
+    <message>
+        <location filename="../../app/screens/barrel_overlay.py" line="+31" />
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Barrel %1</source>
+        <translation>Barrel %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Staves: %1</source>
+        <translation>Staves: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Closed</source>
+        <translation>Closed</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The next board is stave 1.</source>
+        <translation>The next board is stave 1.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Gap %1</source>
+        <translation>Gap %1</translation>
+    </message>
+</context>
+<context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+91" />
+        <location filename="../../app/screens/barrel_panel.py" line="+94" />
         <source>Closing stave</source>
         <translation>Closing stave</translation>
     </message>
@@ -977,7 +1010,7 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+79" />
+        <location line="+98" />
         <source>Cooper's card</source>
         <translation>Cooper's card</translation>
     </message>
@@ -2296,18 +2329,18 @@ shift</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+187" />
+        <location filename="../../app/screens/main_window.py" line="+190" />
         <source>(+%1 more)</source>
         <translation>(+%1 more)</translation>
     </message>
     <message>
         <location line="+2" />
-        <location line="+185" />
+        <location line="+204" />
         <source>Alarms</source>
         <translation>Alarms</translation>
     </message>
     <message>
-        <location line="-178" />
+        <location line="-197" />
         <source>The machine is not running.</source>
         <translation>The machine is not running.</translation>
     </message>
@@ -2325,13 +2358,13 @@ shift</translation>
     </message>
     <message>
         <location line="-11" />
-        <location line="+194" />
+        <location line="+213" />
         <location line="+2" />
         <source>Leave the kiosk</source>
         <translation>Leave the kiosk</translation>
     </message>
     <message>
-        <location line="-188" />
+        <location line="-207" />
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Log out %1 and go back to the operator level?</translation>
     </message>
@@ -2356,12 +2389,12 @@ shift</translation>
         <translation>Log in: enter your PIN</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+31" />
         <source>Operator of this shift: your name</source>
         <translation>Operator of this shift: your name</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+24" />
         <source>Wrong PIN.</source>
         <translation>Wrong PIN.</translation>
     </message>
@@ -3064,7 +3097,7 @@ shift</translation>
         <translation>Cancel</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+43" />
         <source>No recipe matches.</source>
         <translation>No recipe matches.</translation>
     </message>
@@ -3115,7 +3148,7 @@ shift</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+378" />
+        <location filename="../../app/screens/recipes_screen.py" line="+379" />
         <location line="+110" />
         <source>Recipes</source>
         <translation>Recipes</translation>

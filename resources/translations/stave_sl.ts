@@ -964,9 +964,42 @@
     </message>
 </context>
 <context>
+    <name>BarrelOverlay</name>
+    <message>
+        <location filename="../../app/screens/barrel_overlay.py" line="+31"/>
+        <source>Close</source>
+        <translation>Zapri</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Barrel %1</source>
+        <translation>Sod %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Staves: %1</source>
+        <translation>Dog: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Closed</source>
+        <translation>Zaprt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The next board is stave 1.</source>
+        <translation>Naslednja deska je doga 1.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gap %1</source>
+        <translation>Reža %1</translation>
+    </message>
+</context>
+<context>
     <name>BarrelPanel</name>
     <message>
-        <location filename="../../app/screens/barrel_panel.py" line="+91"/>
+        <location filename="../../app/screens/barrel_panel.py" line="+94"/>
         <source>Closing stave</source>
         <translation>Zapri sod zdaj</translation>
     </message>
@@ -977,7 +1010,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+79"/>
+        <location line="+98"/>
         <source>Cooper&apos;s card</source>
         <translation>Kartica soda</translation>
     </message>
@@ -2296,18 +2329,18 @@ izmena</translation>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/screens/main_window.py" line="+187"/>
+        <location filename="../../app/screens/main_window.py" line="+190"/>
         <source>(+%1 more)</source>
         <translation>(+%1 drugih)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+185"/>
+        <location line="+204"/>
         <source>Alarms</source>
         <translation>Alarmi</translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-197"/>
         <source>The machine is not running.</source>
         <translation>Stroj ne deluje.</translation>
     </message>
@@ -2325,13 +2358,13 @@ izmena</translation>
     </message>
     <message>
         <location line="-11"/>
-        <location line="+194"/>
+        <location line="+213"/>
         <location line="+2"/>
         <source>Leave the kiosk</source>
         <translation>Zapusti kiosk</translation>
     </message>
     <message>
-        <location line="-188"/>
+        <location line="-207"/>
         <source>Log out %1 and go back to the operator level?</source>
         <translation>Odjavim uporabnika %1 in se vrnem na raven operaterja?</translation>
     </message>
@@ -2356,12 +2389,12 @@ izmena</translation>
         <translation>Prijava: vnesite PIN</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+31"/>
         <source>Operator of this shift: your name</source>
         <translation>Upravljavec te izmene: vaše ime</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>Wrong PIN.</source>
         <translation>Napačen PIN.</translation>
     </message>
@@ -3064,7 +3097,7 @@ izmena</translation>
         <translation>Prekliči</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+43"/>
         <source>No recipe matches.</source>
         <translation>Noben recept ne ustreza.</translation>
     </message>
@@ -3115,7 +3148,7 @@ izmena</translation>
 <context>
     <name>RecipesScreen</name>
     <message>
-        <location filename="../../app/screens/recipes_screen.py" line="+378"/>
+        <location filename="../../app/screens/recipes_screen.py" line="+379"/>
         <location line="+110"/>
         <source>Recipes</source>
         <translation>Recepti</translation>

@@ -9,8 +9,8 @@ the staves run counter-clockwise as the cooper sees them from the head.
 
 from __future__ import annotations
 
-from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen
+from PySide6.QtCore import QPointF, QRectF, Qt, Signal
+from PySide6.QtGui import QColor, QFont, QMouseEvent, QPainter, QPaintEvent, QPen
 from PySide6.QtWidgets import QSizePolicy, QWidget
 
 from app.machine.barrel_view import BarrelView, Point
@@ -25,10 +25,17 @@ LABEL_FONT_PX = 11
 
 
 class BarrelDrawing(QWidget):
-    def __init__(self, parent: QWidget | None = None) -> None:
+    """``tapped`` when a finger lifts on it: the main screen's small drawing opens the big one."""
+
+    tapped = Signal()
+
+    def __init__(
+        self, parent: QWidget | None = None, *, label_font_px: int = LABEL_FONT_PX
+    ) -> None:
         super().__init__(parent)
         self.setObjectName("barrelDrawing")
         self.view: BarrelView | None = None
+        self.label_font_px = label_font_px
         self.setMinimumSize(80, 40)  # on 1024x768 its height, not its width, limits it
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
 
@@ -57,7 +64,7 @@ class BarrelDrawing(QWidget):
         painter.setPen(QPen(OUTLINE_COLOR, 1.0, Qt.PenStyle.DotLine))
         painter.drawEllipse(centre, view.a_mm * scale, view.b_mm * scale)
         font = QFont(painter.font())
-        font.setPixelSize(LABEL_FONT_PX)
+        font.setPixelSize(self.label_font_px)
         painter.setFont(font)
         joints = view.joints_xy
         for index in range(1, len(joints)):
@@ -77,15 +84,20 @@ class BarrelDrawing(QWidget):
             painter.drawLine(at(joints[-1]), at(joints[0]))
         painter.end()
 
-    @staticmethod
+    def mouseReleaseEvent(self, event: QMouseEvent) -> None:
+        if self.rect().contains(event.position().toPoint()):
+            self.tapped.emit()
+        super().mouseReleaseEvent(event)
+
     def _number(
-        painter: QPainter, start: QPointF, end: QPointF, centre: QPointF, text: str
+        self, painter: QPainter, start: QPointF, end: QPointF, centre: QPointF, text: str
     ) -> None:
         """The stave's number just inside its face (towards the barrel's axis)."""
+        size = float(self.label_font_px)
         middle = (start + end) / 2.0
         inward = centre - middle
         length = max(1.0, (inward.x() ** 2 + inward.y() ** 2) ** 0.5)
-        spot = middle + inward * (14.0 / length)
+        spot = middle + inward * (1.3 * size / length)
         painter.setPen(TEXT_COLOR)
-        box = QRectF(spot.x() - 12.0, spot.y() - 8.0, 24.0, 16.0)
+        box = QRectF(spot.x() - 1.1 * size, spot.y() - 0.75 * size, 2.2 * size, 1.5 * size)
         painter.drawText(box, Qt.AlignmentFlag.AlignCenter, text)
