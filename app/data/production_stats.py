@@ -8,7 +8,9 @@ alarm codes). Only the cycle times are per piece, and of the newest ``MAX_CYCLE_
 Hours are the hours of the stored UTC time stamps (the time zones a panel runs in are whole
 hours from UTC, so an hour of UTC is an hour on the wall clock).
 
-The bound a piece's cycle time is drawn against is the part of its own recorded step times the
+A piece's cycle time is drawn without its wait for the board (``waiting`` in its step times),
+as the main screen shows it: how long the machine worked on the board, not how long the
+operator took to bring it. The bound it is drawn against is the part of its own recorded step times the
 machine cannot shorten: the centering and clamping strokes, the gauge's reading, both sides
 and the repositioning between them (the cuts run at the jerk-limited optimum, see
 ``app/machine/cycle_floor.py``). With the strokes at their nominal times it lies below the
@@ -103,6 +105,11 @@ def _hour(text: str) -> datetime:
     return datetime.strptime(text, "%Y-%m-%dT%H").replace(tzinfo=UTC)
 
 
+# A piece's cycle time without its wait for the board (the operator's pace, not the
+# machine's), as the main screen counts it; records without step times keep the whole time.
+_WORK_SQL = "cycle_time_s - coalesce(json_extract(step_times_json, '$.waiting'), 0)"
+
+
 def _bound_sql() -> str:
     terms = " + ".join(f"coalesce(json_extract(step_times_json, '$.{s}'), 0)" for s in BOUND_STEPS)
     return f"CASE WHEN step_times_json IS NULL THEN NULL ELSE {terms} END"
@@ -154,7 +161,7 @@ def production_stats(db: Database, start: datetime, end: datetime) -> Production
             CyclePoint(parse_utc(row[0]), float(row[1]), None if row[2] is None else float(row[2]))
             for row in reversed(
                 conn.execute(
-                    f"SELECT time, cycle_time_s, {_bound_sql()} FROM production "
+                    f"SELECT time, {_WORK_SQL}, {_bound_sql()} FROM production "
                     f"WHERE result = 'ok' AND {in_range} ORDER BY time DESC, id DESC LIMIT ?",
                     (*window, MAX_CYCLE_POINTS),
                 ).fetchall()
