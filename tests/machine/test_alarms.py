@@ -77,3 +77,16 @@ def test_full_history_and_one_line_per_source() -> None:
 
 def test_catalogue_codes_are_unique_and_texts_clear() -> None:
     assert all(code == d.code and d.text for code, d in CATALOGUE.items())
+
+
+def test_the_history_keeps_only_its_limit_of_newest_transitions() -> None:
+    """The machine process runs for months: the in-memory history is bounded (the database
+    keeps every transition)."""
+    manager, seen = make()
+    for _ in range(manager.history_limit):  # raised, returned, acknowledged: 3 transitions each
+        manager.raise_alarm("E010", "X")
+        manager.clear("E010", "X")
+        manager.acknowledge()
+    assert len(seen) == 3 * manager.history_limit
+    assert len(manager.history) == manager.history_limit
+    assert manager.history == seen[-manager.history_limit :]
