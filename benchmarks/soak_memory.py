@@ -7,8 +7,10 @@ journalled store and the planner on a worker thread, logging to a rotating file,
 taken and pickled at the rate the process publishes it, each new plan preview pickled as it
 goes to the screens) on the simulated machine with a simulated clock, as fast as it goes. After
 every block of cycles it prints the resident set size, its growth per 1,000 cycles since the
-block before, and SQLite's own heap (its page caches, statements and schema; read from the
-SQLite library through ``sqlite3_memory_used`` where that library is the one Python uses). At
+block before, SQLite's own heap (its page caches, statements and schema; read from the
+SQLite library through ``sqlite3_memory_used`` where that library is the one Python uses), and
+the C heap's bytes in use and free (glibc's ``mallinfo2``: a leak shows there even while RSS
+stays flat because the heap reuses free memory). At
 the end it prints the growth per 1,000 cycles from the first block to the last (the first
 block includes start-up allocations).
 
@@ -74,6 +76,34 @@ def sqlite_memory_reader() -> Callable[[], int] | None:
     return used if used() > 0 else None
 
 
+class _Mallinfo2(ctypes.Structure):
+    _fields_ = [
+        (name, ctypes.c_size_t)
+        for name in (
+            "arena", "ordblks", "smblks", "hblks", "hblkhd",
+            "usmblks", "fsmblks", "uordblks", "fordblks", "keepcost",
+        )
+    ]  # fmt: skip
+
+
+def c_heap_reader() -> Callable[[], tuple[int, int]] | None:
+    """(bytes in use, bytes free) of the C heap (glibc >= 2.33 ``mallinfo2``, every arena), or
+    None elsewhere. RSS alone hides a slow leak while the heap still has free memory to reuse:
+    the bytes in use do not."""
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        mallinfo2 = libc.mallinfo2
+    except (OSError, AttributeError):
+        return None
+    mallinfo2.restype = _Mallinfo2
+
+    def read() -> tuple[int, int]:
+        info = mallinfo2()
+        return int(info.uordblks + info.hblkhd), int(info.fordblks)
+
+    return read
+
+
 def malloc_trim() -> bool:
     """Give the C heap's free pages back to the system (glibc only); False where unavailable."""
     try:
@@ -116,6 +146,7 @@ def soak(
             load_config(), Path(tmp) / "soak.db", threaded_store=True, submit=pool.submit
         )
         sqlite_used = sqlite_memory_reader()
+        c_heap = c_heap_reader()
         published = {"t": 0.0, "plan": 0, "bytes": 0}
 
         def publish(rt: MachineRuntime) -> None:
@@ -162,10 +193,15 @@ def soak(
                     else " " * 29
                 )
                 sqlite_text = (
-                    f"  SQLite {sqlite_used() / 1024:7.0f} KiB" if sqlite_used is not None else ""
+                    f"  SQLite {sqlite_used() / 1024:5.0f} KiB" if sqlite_used is not None else ""
                 )
+                heap_text = ""
+                if c_heap is not None:
+                    in_use, free = c_heap()
+                    heap_text = f"  C heap in use {in_use / 1024:6.0f}, free {free / 1024:6.0f} KiB"
                 print(
-                    f"{done:6d} cycles  RSS {figures[-1][1] / 1024:7.1f} MiB{growth}{sqlite_text}",
+                    f"{done:6d} cycles  RSS {figures[-1][1] / 1024:7.1f} MiB{growth}"
+                    f"{sqlite_text}{heap_text}",
                     flush=True,
                 )
                 if trace_frames:
