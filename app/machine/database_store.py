@@ -109,8 +109,8 @@ WRITER_BUSY_TIMEOUT_S = 2.0
 WRITER_PAGE_CACHE_KIB = 256
 """The writer connection's page cache: it only appends records and looks up the last few, so
 the pages it needs are the right edges of a few B-trees (a few dozen pages of 4 KiB). With the
-general bound (2 MiB) its cache filled with every new page of the growing file for about 5,000
-boards, 0.4 KiB a board, before it stopped growing; with this one it stops after a few hundred."""
+general bound (2 MiB) its cache kept every new page of the growing file, 0.4 KiB a board,
+and would have grown for about 5,000 boards; with this bound it stops after about 400."""
 
 
 def _service_user(db: Database) -> User:
