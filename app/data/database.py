@@ -138,12 +138,11 @@ SIMULATION_APPLICATION_ID = 0x53494D55
 in the file itself, so a copy keeps it, and no table or migration is needed for it."""
 
 SYSTEM_USER = "system"
-PAGE_CACHE_KIB = 2048
-"""SQLite's page cache per connection, set explicitly: the machine process runs for months and
-its database grows by every board, so the cache fills with the file's pages up to this bound
-and then stays there (a soak run's RSS growth per cycle is this cache filling, not Python
-objects, which stay flat)."""
 """Name logged for changes the software makes by itself (defaults of a new database)."""
+PAGE_CACHE_KIB = 2048
+"""SQLite's page cache per connection unless the opener asks for another bound, set
+explicitly: a long-running process's database grows by every board, and a connection's cache
+keeps every page it touches until this bound is reached (then it reuses the least recent)."""
 
 _RECIPE_COLUMNS = (
     "id, name, length_mm, thickness_mm, length_ratio_num, length_ratio_den, width_ratio_num, "
@@ -226,6 +225,7 @@ class Database:
         busy_timeout_s: float = 10.0,
         load_samples: bool = True,
         samples_path: Path | None = None,
+        page_cache_kib: int = PAGE_CACHE_KIB,
     ) -> Database:
         """Open (creating or migrating as needed) the database at ``path``.
 
@@ -233,7 +233,8 @@ class Database:
         (``load_samples``) the sample recipes of ``samples_path`` (None: the shipped ones), all
         in one transaction.
         ``limits`` are the machine limits recipes are validated against; ``clock`` gives the
-        time stamps (UTC now by default). Raises DatabaseOpenError (SchemaVersionError for a
+        time stamps (UTC now by default); ``page_cache_kib`` bounds this connection's page
+        cache. Raises DatabaseOpenError (SchemaVersionError for a
         file from newer software) with the path and the reason.
         """
         db_path = Path(path)
@@ -253,7 +254,7 @@ class Database:
                 )
             connection.execute("PRAGMA synchronous = FULL")
             connection.execute("PRAGMA foreign_keys = ON")
-            connection.execute(f"PRAGMA cache_size = -{PAGE_CACHE_KIB}")  # negative: KiB
+            connection.execute(f"PRAGMA cache_size = -{int(page_cache_kib)}")  # negative: KiB
             database = cls(
                 connection,
                 db_path,

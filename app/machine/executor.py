@@ -53,6 +53,10 @@ from app.machine.planner.chunked import ChunkedTrajectory, PlannedChunk
 from app.machine.planner.limits import MAX_OVERRIDE_PCT
 from app.machine.planner.trajectory import Phase
 
+REMAINING_CACHE_SIZE = 4
+"""Override values whose remaining chunk durations the executor keeps (the newest): a feed
+knob turned through many values in one long cut must not grow the cache by one entry each."""
+
 
 class ExecutorState(enum.Enum):
     RUNNING = "running"
@@ -390,6 +394,8 @@ class PathExecutor:
                     float(plan_to_end(c.chunk, rest_state(c.chunk), key, c.chunk.dwell_s).duration)
                     for c in self._plan.chunks
                 )
+            if len(self._remaining_cache) >= REMAINING_CACHE_SIZE:
+                del self._remaining_cache[next(iter(self._remaining_cache))]  # the oldest
             self._remaining_cache[key] = cached[: self._count]
         return cached[: self._count]
 

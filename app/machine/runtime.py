@@ -11,6 +11,7 @@ from __future__ import annotations
 import gc
 import logging
 import time
+from array import array
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -28,9 +29,14 @@ log = logging.getLogger(__name__)
 
 @dataclass
 class LatenessStats:
-    """How late each period started, in seconds (real-time loop only)."""
+    """How late each period started, in seconds (real-time loop only).
 
-    samples: list[float] = field(default_factory=list)
+    Bounded: at most ``limit`` samples (the older half is dropped when full; 200,000 periods are
+    13 minutes at 4 ms). Kept as an array of doubles, 8 bytes a sample (1.6 MB at the bound),
+    not a list of float objects (32 bytes a sample), because the machine process runs for months.
+    """
+
+    samples: array[float] = field(default_factory=lambda: array("d"))
     overruns: int = 0
     limit: int = 200_000
 

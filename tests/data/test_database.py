@@ -92,6 +92,8 @@ def test_the_connection_is_wal_synchronous_full_with_foreign_keys(db_path: Path)
         assert conn.execute("PRAGMA foreign_keys").fetchone()[0] == 1
         # the page cache, the one memory that grows with the file, is bounded
         assert conn.execute("PRAGMA cache_size").fetchone()[0] == -PAGE_CACHE_KIB
+    with Database.open(db_path, page_cache_kib=256) as small:  # the machine's record writer
+        assert small._conn.execute("PRAGMA cache_size").fetchone()[0] == -256
 
 
 def test_reopening_adds_nothing(db_path: Path) -> None:

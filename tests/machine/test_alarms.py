@@ -114,3 +114,16 @@ def test_every_transition_keeps_its_message_coded_for_the_history() -> None:
     assert {e.detail_json for e in stored if e.source == "Y"} == {None}
     for unreadable in ('{"reason": "NO_SUCH_REASON", "args": [], "causes": []}', "{}", "[", ""):
         assert refusal_from_json(unreadable) is None
+
+
+def test_the_history_keeps_only_its_limit_of_newest_transitions() -> None:
+    """The machine process runs for months: the in-memory history is bounded (the database
+    keeps every transition)."""
+    manager, seen = make()
+    for _ in range(manager.history_limit):  # raised, returned, acknowledged: 3 transitions each
+        manager.raise_alarm("E010", "X")
+        manager.clear("E010", "X")
+        manager.acknowledge()
+    assert len(seen) == 3 * manager.history_limit
+    assert len(manager.history) == manager.history_limit
+    assert manager.history == seen[-manager.history_limit :]

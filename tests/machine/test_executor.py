@@ -13,6 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.machine.executor import (
+    REMAINING_CACHE_SIZE,
     ExecutorOutput,
     ExecutorState,
     PathExecutor,
@@ -90,6 +91,22 @@ def test_elapsed_remaining_and_progress() -> None:
     while not executor.done:
         executor.step()
     assert executor.progress == 1.0 and executor.remaining_s == 0.0
+
+
+def test_a_knob_turned_through_many_overrides_keeps_only_a_few_cached_durations() -> None:
+    """The remaining time is cached per override value; a knob turned through 40 values in
+    one cut keeps the newest few, and a value dropped from the cache is worked out again."""
+    executor = PathExecutor(PLAN, PERIOD_S)
+    for _ in range(50):
+        executor.step()
+    remaining = []
+    for k in range(40):
+        executor.set_override(60.0 + k * 0.5)
+        remaining.append(executor.remaining_s)
+        assert len(executor._remaining_cache) <= REMAINING_CACHE_SIZE
+    assert remaining == sorted(remaining, reverse=True)  # faster: less time left
+    executor.set_override(60.0)
+    assert executor.remaining_s == pytest.approx(remaining[0], rel=1e-9)
 
 
 @settings(max_examples=15, deadline=None)
