@@ -11,12 +11,12 @@ hours from UTC, so an hour of UTC is an hour on the wall clock).
 A piece's cycle time is drawn without its wait for the board (``waiting`` in its step times),
 as the main screen shows it: how long the machine worked on the board, not how long the
 operator took to bring it. The bound it is drawn against is the part of its own recorded
-step times the machine cannot shorten: the centering and clamping strokes, the gauge's reading, both sides
-and the repositioning between them (the cuts run at the jerk-limited optimum, see
-``app/machine/cycle_floor.py``). With the strokes at their nominal times it lies below the
-machine's floor (the approach and what is left of the unclamping stroke are not in it); it
-needs no plan, because the records keep the step times, not the plan a floor is computed
-from. Records from before the step times were kept have no bound.
+step times the machine cannot shorten: the centering and clamping strokes, the gauge's
+reading, both sides and the repositioning between them (the cuts run at the jerk-limited
+optimum, see ``app/machine/cycle_floor.py``). With the strokes at their nominal times it
+lies below the machine's floor (the approach and what is left of the unclamping stroke are
+not in it); it needs no plan, because the records keep the step times, not the plan a floor
+is computed from. Records from before the step times were kept have no bound.
 """
 
 from __future__ import annotations
