@@ -32,6 +32,9 @@ log = logging.getLogger(__name__)
 
 SNAPSHOT_PERIOD_S = 0.02  # 50 Hz to the screens
 _SNAPSHOT_QUEUE_SIZE = 4
+# Previews wait here for the screens, which keep only the newest: a hung screen process
+# that stays alive must not let one preview a board pile up in the machine process.
+_PLAN_QUEUE_SIZE = 4
 
 
 def _try_realtime_priority() -> str:
@@ -99,9 +102,12 @@ def machine_process_main(
                 snapshots.put_nowait(snapshot)
             if snapshot.plan_id != published_plan:
                 preview = controller.plan_preview(snapshot.plan_id)
-                if preview is not None:
-                    plans.put(preview)
-                published_plan = snapshot.plan_id
+                try:
+                    if preview is not None:
+                        plans.put_nowait(preview)
+                    published_plan = snapshot.plan_id
+                except queue.Full:
+                    pass  # the screens are behind (or hung): offered again next time
             if os.getppid() != parent_pid:
                 log.error("the operator application is gone: stopping the machine")
                 running = False
@@ -144,7 +150,7 @@ class ProcessMachineLink:
         context = multiprocessing.get_context("spawn")
         commands: multiprocessing.queues.Queue[Any] = context.Queue()
         snapshots: multiprocessing.queues.Queue[Any] = context.Queue(_SNAPSHOT_QUEUE_SIZE)
-        plans: multiprocessing.queues.Queue[Any] = context.Queue()
+        plans: multiprocessing.queues.Queue[Any] = context.Queue(_PLAN_QUEUE_SIZE)
         process = context.Process(
             target=machine_process_main,
             name="machine",

@@ -80,3 +80,28 @@ def test_machine_stops_when_the_gui_process_dies(tmp_path: Path) -> None:
         if parent.poll() is None:
             parent.kill()
         parent.stdout.close()  # type: ignore[union-attr]
+
+
+def test_previews_wait_in_a_bounded_queue_while_the_screens_are_behind(tmp_path: Path) -> None:
+    """A screen process that hangs but stays alive reads nothing: the previews a recipe
+    change makes do not pile up in the machine process, and the newest one still arrives
+    once the screens read again."""
+    config = load_config()
+    axes = {n: replace(a, absolute_encoder=True) for n, a in config.axes.items()}
+    link = ProcessMachineLink.start(
+        replace(config, axes=axes), tmp_path / "stave.db", realtime_priority=False
+    )
+    try:
+        wait_for(link, lambda s: s.state is MachineState.READY and s.plan_id != 0)
+        for recipe_id in (2, 3, 4, 5, 6, 7) * 2:  # twelve previews; the screens read none
+            link.send(cmd.SelectRecipe(recipe_id))
+            time.sleep(0.1)
+        time.sleep(0.5)
+        assert link._plans_queue.qsize() <= 4
+        newest = wait_for(link, lambda s: s.recipe_id == 7)
+        end = time.monotonic() + 10.0
+        while link.plan(newest.plan_id) is None and time.monotonic() < end:
+            time.sleep(0.05)
+        assert link.plan(newest.plan_id) is not None
+    finally:
+        link.close()
