@@ -32,6 +32,7 @@ def test_the_wheel_turned_on_the_page_moves_x_by_count_times_multiplier(
     # The wheel owns the jog for about half a second of machine time: small steps of machine
     # time per poll, so the screen sees it however fast this computer runs the machine.
     machine.advance_per_poll_s = 0.02
+
     def press(name: str) -> None:
         """Scroll the page to the button, as a finger would, and tap it."""
         button = find_button(window, name)
