@@ -69,6 +69,8 @@ class UsageError(Exception):
 
 
 MAX_INJECT_DELAY_S = 600.0  # longer than any step of a cycle
+OPERATOR_STOP = "stop"  # not a fault: the operator's Stop (screen or push button)
+INJECT_KINDS = (*FAULT_KINDS, OPERATOR_STOP)
 
 
 @dataclass(frozen=True)
@@ -90,9 +92,10 @@ class Injection:
         what, _, when = text.partition("@")
         step_name, plus, delay = when.partition("+")
         kind, _, target = what.partition(":")
-        if kind not in FAULT_KINDS:
+        if kind not in INJECT_KINDS:
             raise UsageError(
-                f"--inject {text!r}: kind {kind!r} is not allowed: one of " + ", ".join(FAULT_KINDS)
+                f"--inject {text!r}: kind {kind!r} is not allowed: one of "
+                + ", ".join(INJECT_KINDS)
             )
         if step_name not in STEP_NAMES:
             raise UsageError(
@@ -229,8 +232,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--inject",
         metavar="KIND[:TARGET]@STEP[+SECONDS]",
-        help="inject a fault when the cycle reaches STEP (or SECONDS into it); KIND is one of "
-        + ", ".join(FAULT_KINDS)
+        help="inject a fault when the cycle reaches STEP (or SECONDS into it), or press "
+        "Stop then (KIND stop); KIND is one of "
+        + ", ".join(INJECT_KINDS)
         + "; TARGET an axis (X, Y, Z) or the "
         "simulation's target (e.g. clamp_sensor:open); STEP one of " + ", ".join(STEP_NAMES),
     )
@@ -333,18 +337,22 @@ def _tick_pacing(runtime: MachineRuntime, realtime: bool) -> Iterator[None]:
         runtime.on_tick.remove(pace)
 
 
-def _reset_and_resume(runtime: MachineRuntime, report: CycleReport, watch: Watch) -> None:
-    """The operator's gestures after an interruption: the cause removed, Reset, Resume."""
+def _reset_and_resume(
+    runtime: MachineRuntime, report: CycleReport, watch: Watch, *, reset: bool = True
+) -> None:
+    """The operator's gestures after an interruption: the cause removed, Reset (after an
+    alarm; a Stop latches nothing), Resume."""
     c = runtime.controller
     faults = runtime.backend.extras.get("faults")
     if isinstance(faults, FaultInjector):
         faults.clear_injections()
     watch.operator_acted = True
     runtime.run_for(0.5)
-    c.post(cmd.Reset())
-    if not runtime.run_until(lambda m: m.state not in LATCHED_STATES, RESET_TIMEOUT_S):
-        report.resume = f"reset refused: {c.message}"
-        return
+    if reset:
+        c.post(cmd.Reset())
+        if not runtime.run_until(lambda m: m.state not in LATCHED_STATES, RESET_TIMEOUT_S):
+            report.resume = f"reset refused: {c.message}"
+            return
     if c.partly_cut.board is None:
         report.resume = "nothing to resume: the cut had not begun"
         return
@@ -398,7 +406,9 @@ def _run_cycle(
             and m.now_s - step_began_s >= injection.after_s
         ):
             faults = runtime.backend.extras.get("faults")
-            if isinstance(faults, FaultInjector):
+            if injection.kind == OPERATOR_STOP:
+                m.post(cmd.Stop())
+            elif isinstance(faults, FaultInjector):
                 try:
                     faults.inject(injection.kind, injection.target)
                 except ValueError as exc:
@@ -411,12 +421,15 @@ def _run_cycle(
     runtime.run_for(2 * runtime.period_s)
     if not runtime.run_until(finished, CYCLE_TIMEOUT_S):
         raise RuntimeError(f"cycle did not end within {CYCLE_TIMEOUT_S:.0f} s")
+    stopped = injection is not None and injection.kind == OPERATOR_STOP and injected
     if c.state in LATCHED_STATES:
         runtime.run_for(SETTLE_AFTER_ALARM_S)
         report.result = "alarm"
+    elif stopped and c.partly_cut.board is not None:
+        report.result = "stopped"  # the board lies partly cut: Resume or Abandon it
     report.alarms = sorted({a.code for a in c.alarms.views() if a.alarm_id not in alarms_before})
-    if resume and report.result == "alarm":
-        _reset_and_resume(runtime, report, watch)
+    if resume and report.result in ("alarm", "stopped"):
+        _reset_and_resume(runtime, report, watch, reset=report.result == "alarm")
     if c.finished_cycles:
         piece, cycle = c.finished_cycles[-1]
         o = cycle.outcome
@@ -429,13 +442,15 @@ def _run_cycle(
             report.cut_length_mm = {"A": o.cut_length_a_mm, "B": o.cut_length_b_mm}
     if injection is not None:
         delay = f"+{injection.after_s:g}" if injection.after_s else ""
-        report.injection = f"{injection.kind}@{injection.step.name.lower()}{delay}: " + (
-            "never reached that step (or left it before that time)"
-            if not injected
-            else "raised " + (", ".join(report.alarms) or "no alarm")
-            if report.result != "ok"
-            else "had no effect in that step (the cycle ended normally)"
-        )
+        if not injected:
+            effect = "never reached that step (or left it before that time)"
+        elif stopped and report.result != "ok":
+            effect = "stopped the cycle, the board partly cut"
+        elif report.result != "ok":
+            effect = "raised " + (", ".join(report.alarms) or "no alarm")
+        else:
+            effect = "had no effect in that step (the cycle ended normally)"
+        report.injection = f"{injection.kind}@{injection.step.name.lower()}{delay}: {effect}"
     watch.flush_contour_error()
     report.max_contour_error_mm = watch.max_contour_error_mm
     watch.max_contour_error_mm = 0.0
@@ -698,8 +713,11 @@ def _cycle_json(r: CycleReport) -> dict[str, Any]:
 
 
 def _describe(r: CycleReport) -> str:
+    interrupted = f"ALARM {', '.join(r.alarms)}" if r.alarms else "STOPPED"
     if r.result == "resumed":
-        return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms)}, then resumed"
+        return f"width {r.width_mm:.2f} mm: {interrupted}, then resumed"
+    if r.result == "stopped":
+        return f"width {r.width_mm:.2f} mm: STOPPED by the operator, the board partly cut"
     if r.result != "ok":
         return f"width {r.width_mm:.2f} mm: ALARM {', '.join(r.alarms) or '(none)'}"
     # A curved side (a family, a drawing) has no single rise D and radius R.

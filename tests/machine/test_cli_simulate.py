@@ -102,6 +102,21 @@ def test_injected_fault_ends_in_alarm_and_nothing_restarts(capsys) -> None:
     assert result["cycles"][0]["result"] == "alarm" and "E010" in result["cycles"][0]["alarms"]
 
 
+def test_a_stop_in_the_middle_of_a_side_leaves_the_board_partly_cut(capsys) -> None:
+    """The operator's Stop is not a fault: nothing latches, the board stays on the table
+    partly cut, nothing restarts and no piece is counted."""
+    code, out, err = simulate(
+        capsys, "--recipe", BARRIQUE, "--width", "150", "--json", "--inject", "stop@cutting_b+3"
+    )
+    assert code == 0, err
+    result = json.loads(out)
+    cycle = result["cycles"][0]
+    assert (cycle["result"], cycle["alarms"]) == ("stopped", [])
+    assert cycle["injection"] == "stop@cutting_b+3: stopped the cycle, the board partly cut"
+    assert result["final_state"] == "ready" and result["pieces"] == 0
+    assert result["restarted"] is False
+
+
 def test_recipe_file(capsys, tmp_path: Path) -> None:
     recipe = {
         "name": "Test 900",
@@ -161,6 +176,7 @@ def test_console_script_runs_without_traceback(tmp_path: Path) -> None:
         "estop@repositioning",
         "estop@cutting_a+5",
         "following_error:X@cutting_b+4",
+        "stop@cutting_a+5",
     ],
 )
 def test_inject_then_resume_never_crosses_the_board_in_the_trace(
